@@ -1,0 +1,40 @@
+# Silva — top-level commands. See README.md.
+BUILD      ?= build
+JOBS       ?= $(shell nproc)
+CMAKE_ARGS ?=
+SILVA      := $(BUILD)/silva
+
+.PHONY: deps build run test bench sanitize tidy test-slurm check-export clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+## make run: build Release and generate the demo dataset of configs/demo.toml into ./out/
+run: build
+	$(SILVA) generate --config configs/demo.toml --overwrite
+
+## make test: build and run every test
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+## make bench: the end-to-end benchmark harness (writes bench/results/)
+bench: build
+	$(SILVA) bench
+
+## make sanitize: ASan + UBSan build running every test
+sanitize: deps
+	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DSILVA_SANITIZE=ON -DSILVA_BUILD_BENCH=OFF >/dev/null
+	@cmake --build build-sanitize -j $(JOBS)
+	cd build-sanitize && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)
+
+## make tidy: clang-tidy over every project source file
+tidy: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	bash scripts/tidy.sh $(BUILD)
+
+clean:
+	rm -rf $(BUILD) build-sanitize

@@ -1,0 +1,24 @@
+#include "core/material.hpp"
+
+#include <cstring>
+
+namespace silva {
+
+namespace {
+constexpr const char* kNames[int(Material::Count)] = {
+    "ground", "trail", "bark_conifer", "bark_broadleaf", "bark_dead", "needles",
+    "leaves", "grass", "fern", "shrub_leaves", "rock", "wood"};
+}  // namespace
+
+const char* material_name(Material m) { return kNames[int(m)]; }
+
+bool parse_material(const char* name, Material& out) {
+  for (int i = 0; i < int(Material::Count); ++i)
+    if (std::strcmp(name, kNames[i]) == 0) {
+      out = Material(i);
+      return true;
+    }
+  return false;
+}
+
+}  // namespace silva

@@ -1,0 +1,49 @@
+#include "core/mesh.hpp"
+
+#include <cmath>
+
+namespace silva {
+
+bool AlphaMask::opaque(float u, float v) const {
+  const float fu = u - std::floor(u), fv = v - std::floor(v);
+  int x = int(fu * float(width)), y = int(fv * float(height));
+  x = x >= width ? width - 1 : x;
+  y = y >= height ? height - 1 : y;
+  return float(alpha[size_t(y) * size_t(width) + size_t(x)]) >= cutoff * 255.0f;
+}
+
+AABB Mesh::bounds() const {
+  AABB b;
+  for (const auto& p : positions) b.extend(p);
+  return b;
+}
+
+void Mesh::compute_normals() {
+  normals.assign(positions.size(), Vec3f::Zero());
+  for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    const Vec3f n = (positions[b] - positions[a]).cross(positions[c] - positions[a]);
+    normals[a] += n;
+    normals[b] += n;
+    normals[c] += n;
+  }
+  for (auto& n : normals) {
+    const float len = n.norm();
+    n = len > 0 ? Vec3f(n / len) : Vec3f(0, 0, 1);
+  }
+}
+
+void Mesh::append(const Mesh& other) {
+  const uint32_t base = uint32_t(positions.size());
+  const uint32_t index_base = uint32_t(indices.size());
+  positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+  normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+  uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
+  for (uint32_t i : other.indices) indices.push_back(i + base);
+  for (MeshPart p : other.parts) {
+    p.first_index += index_base;
+    parts.push_back(p);
+  }
+}
+
+}  // namespace silva

@@ -1,0 +1,51 @@
+#pragma once
+/// @file Triangle meshes with per-part semantic roles and materials.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/aabb.hpp"
+#include "core/material.hpp"
+#include "core/ontology.hpp"
+#include "core/types.hpp"
+
+namespace silva {
+
+/// An alpha mask for foliage cards: sampled nearest-texel, repeat wrap, no mipmaps.
+struct AlphaMask {
+  int width = 0;                 ///< Texels across.
+  int height = 0;                ///< Texels down (row 0 is v in [0, 1/height)).
+  std::vector<uint8_t> alpha;    ///< width*height alpha values, row-major.
+  float cutoff = 0.5f;           ///< A texel is opaque when alpha/255 >= cutoff.
+  /// Nearest-texel lookup with repeat wrap: true when (u, v) is opaque.
+  bool opaque(float u, float v) const;
+};
+
+/// A contiguous range of triangles sharing a role, material and mask.
+struct MeshPart {
+  uint32_t first_index = 0;    ///< Offset into Mesh::indices (multiple of 3).
+  uint32_t index_count = 0;    ///< Number of indices (multiple of 3).
+  Role role = Role::Ground;    ///< Semantic role of these triangles.
+  Material material = Material::Ground;  ///< Procedural material.
+  std::shared_ptr<const AlphaMask> mask;  ///< Alpha mask (foliage cards), or null.
+  bool double_sided = false;   ///< Disable back-face culling for this part.
+};
+
+/// Indexed triangle mesh in object space (metres, Z up), counter-clockwise front faces.
+struct Mesh {
+  std::vector<Vec3f> positions;     ///< Vertex positions.
+  std::vector<Vec3f> normals;       ///< Unit vertex normals (same count as positions).
+  std::vector<Vec2f> uvs;           ///< Texture coordinates (same count as positions).
+  std::vector<uint32_t> indices;    ///< Triangle list.
+  std::vector<MeshPart> parts;      ///< Parts covering indices in order.
+  /// Number of triangles.
+  size_t triangle_count() const { return indices.size() / 3; }
+  /// Bounds of all positions.
+  AABB bounds() const;
+  /// Recomputes area-weighted smooth vertex normals from the triangles.
+  void compute_normals();
+  /// Appends another mesh (its parts keep their roles/materials).
+  void append(const Mesh& other);
+};
+
+}  // namespace silva

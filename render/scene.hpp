@@ -1,0 +1,32 @@
+#pragma once
+/// @file What the renderer draws: meshes with LODs and placed instances. No ECS, no files.
+#include <vector>
+
+#include "core/mesh.hpp"
+#include "core/types.hpp"
+
+namespace silva::render {
+
+/// A drawable mesh with its levels of detail (lods[0] = full detail).
+struct MeshLods {
+  std::vector<const Mesh*> lods;          ///< Non-owning; lods[0] is full detail.
+  /// LOD k (k >= 1) is used when the instance's projected bounding-sphere diameter, as a
+  /// fraction of image height, is below lod_screen_sizes[k-1]. Size lods.size()-1, descending.
+  std::vector<float> lod_screen_sizes;
+};
+
+/// One placed copy of a mesh.
+struct Instance {
+  Affine3f object_to_world = Affine3f::Identity();  ///< [R|t], may include uniform scale.
+  uint32_t mesh = 0;         ///< Index into Scene::meshes.
+  uint32_t instance_id = 0;  ///< Packed instance id (0 = stuff: terrain, trail, ground vegetation).
+  uint32_t variation = 0;    ///< Per-instance seed for colour variation in shading.
+};
+
+/// Everything one frame may draw.
+struct Scene {
+  std::vector<MeshLods> meshes;     ///< Drawable meshes.
+  std::vector<Instance> instances;  ///< Placed instances.
+};
+
+}  // namespace silva::render
