@@ -1,0 +1,48 @@
+#include "assets/library.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace silva::assets {
+
+namespace {
+constexpr const char* kKindNames[size_t(AssetKind::Count)] = {
+    "conifer_tree", "broadleaf_tree", "dead_tree", "stump", "grass", "fern", "shrub", "rock", "log"};
+}  // namespace
+
+float CollisionProxy::footprint_radius() const {
+  const float cxy = std::hypot(center.x(), center.y());
+  switch (shape) {
+    case Shape::None:
+      return 0.0f;
+    case Shape::Cylinder:
+    case Shape::Capsule: {
+      // Horizontal reach of the segment plus the radius.
+      const float axial = 0.5f * height * std::hypot(axis.x(), axis.y());
+      return cxy + axial + radius;
+    }
+    case Shape::Sphere:
+      return cxy + radius;
+    case Shape::Box:
+      return cxy + std::hypot(half_extents.x(), half_extents.y());
+  }
+  return 0.0f;
+}
+
+void AssetLibrary::index_kinds() {
+  for (auto& v : by_kind) v.clear();
+  for (uint32_t i = 0; i < assets.size(); ++i) by_kind[size_t(assets[i].kind)].push_back(i);
+}
+
+const char* kind_name(AssetKind k) { return kKindNames[size_t(k)]; }
+
+bool parse_kind(const std::string& name, AssetKind& out) {
+  for (size_t i = 0; i < size_t(AssetKind::Count); ++i)
+    if (name == kKindNames[i]) {
+      out = AssetKind(i);
+      return true;
+    }
+  return false;
+}
+
+}  // namespace silva::assets

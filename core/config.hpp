@@ -1,0 +1,96 @@
+#pragma once
+/// @file The fully resolved run configuration (CONTRACT.md "Config keys"), as plain data.
+/// app/ parses TOML + --set overrides into this struct; every other folder only reads it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace silva {
+
+/// Output images and settings (`[output]`).
+struct OutputConfig {
+  std::string dir = "out";                 ///< output.dir
+  int width = 1920;                        ///< output.resolution (W)
+  int height = 1080;                       ///< output.resolution (H)
+  std::vector<std::string> types = {"rgb", "semantic", "semantic_color", "instance",
+                                    "depth", "depth_exr", "normal"};  ///< output.types
+};
+
+/// Lighting selection (`[lighting]`); the presets themselves live in render::LightingPreset.
+struct LightingConfig {
+  std::string time_of_day = "day";  ///< lighting.time_of_day: preset name
+};
+
+/// Capture sequences (`[captures]`).
+struct CapturesConfig {
+  std::vector<std::string> sequences = {"autopilot", "random"};  ///< captures.sequences
+  int random_count = 100;                          ///< captures.random_count
+  int autopilot_points = 230;                      ///< captures.autopilot_points
+  std::vector<double> autopilot_yaws = {-45, 0, 45};  ///< captures.autopilot_yaws (degrees)
+  bool aerial = false;                             ///< captures.aerial
+  std::string poses_file;                          ///< captures.poses_file ("" = none)
+};
+
+/// Camera model and post (`[camera]`).
+struct CameraConfig {
+  double fov_deg = 90;            ///< camera.fov_deg (horizontal)
+  double near = 0.05;             ///< camera.near (m)
+  double far = 150;               ///< camera.far (m)
+  double ground_height = 1.5;     ///< camera.ground_height (m above ground)
+  double aerial_height = 15;      ///< camera.aerial_height (m above ground)
+  double aerial_pitch_deg = -45;  ///< camera.aerial_pitch_deg
+  double film_grain = 0.015;      ///< camera.film_grain (std-dev, linear units)
+};
+
+/// Vegetation placement (`[vegetation]`).
+struct VegetationConfig {
+  double density = 5;         ///< vegetation.density: percent of placement points holding a tree (1..25)
+  double grid_spacing = 2.0;  ///< vegetation.grid_spacing (m)
+  bool ground = true;         ///< vegetation.ground: grass/ferns on/off
+};
+
+/// Terrain heightfield (`[terrain]`).
+struct TerrainConfig {
+  double max_elevation = 1.5;   ///< terrain.max_elevation (m)
+  int octaves = 6;              ///< terrain.octaves
+  double lacunarity = 2.0;      ///< terrain.lacunarity
+  double persistence = 0.5;     ///< terrain.persistence
+  double frequency = 0.01;      ///< terrain.frequency (cycles per metre)
+  double chunk_size = 32;       ///< terrain.chunk_size (m)
+  double vertex_spacing = 0.5;  ///< terrain.vertex_spacing (m)
+};
+
+/// Trail (`[trail]`).
+struct TrailConfig {
+  bool enabled = true;         ///< trail.enabled
+  double width = 1.5;          ///< trail.width (m)
+  int control_points = 25;     ///< trail.control_points
+  double control_spacing = 20; ///< trail.control_spacing (m)
+};
+
+/// World extent and streaming (`[world]`).
+struct WorldConfig {
+  double extent = 512;           ///< world.extent: side of the capture square (m)
+  double render_distance = 250;  ///< world.render_distance (m)
+};
+
+/// Renderer switches (`[render]`).
+struct RenderConfig {
+  bool lod = true;  ///< render.lod
+};
+
+/// Every config key, resolved (defaults = thesis defaults).
+struct Config {
+  int64_t seed = 0;          ///< seed (0..9 999 999 999); drawn from the clock when absent
+  OutputConfig output;       ///< [output]
+  LightingConfig lighting;   ///< [lighting]
+  CapturesConfig captures;   ///< [captures]
+  CameraConfig camera;       ///< [camera]
+  VegetationConfig vegetation;  ///< [vegetation]
+  TerrainConfig terrain;     ///< [terrain]
+  TrailConfig trail;         ///< [trail]
+  WorldConfig world;         ///< [world]
+  RenderConfig render;       ///< [render]
+};
+
+}  // namespace silva
