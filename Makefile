@@ -36,5 +36,10 @@ tidy: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 	bash scripts/tidy.sh $(BUILD)
 
+## make test-slurm: a throw-away single-node Slurm cluster here (root or sudo); checks that a
+## 2-shard job array + silva merge equals a single-process run byte for byte
+test-slurm: build
+	SILVA=$(SILVA) bash scripts/test-slurm.sh
+
 clean:
 	rm -rf $(BUILD) build-sanitize

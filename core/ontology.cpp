@@ -21,7 +21,7 @@ bool parse_role(const std::string& name, Role& out) {
 
 bool role_has_instances(Role r) {
   switch (r) {
-    case Role::TreeTrunk: case Role::TreeCanopy: case Role::DeadTree:
+    case Role::TreeTrunk: case Role::DeadTree:
     case Role::Stump: case Role::Shrub: case Role::Obstacle:
       return true;
     default:

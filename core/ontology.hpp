@@ -51,7 +51,9 @@ const char* role_name(Role r);
 /// Parses a role name; returns false if unknown.
 bool parse_role(const std::string& name, Role& out);
 
-/// True for roles that are "things" with instances (trees, dead trees, stumps, shrubs, obstacles).
+/// True for roles whose pixels carry an instance index: trunks, dead trees, stumps, shrubs,
+/// obstacles. Canopy pixels are labelled by class only (instance 0): an instance table entry has
+/// one class, and a tree's instance is its trunk (CONTRACT.md: the tree node's class is tree_trunk).
 bool role_has_instances(Role r);
 
 }  // namespace silva

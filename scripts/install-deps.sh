@@ -8,7 +8,7 @@ PKGS=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libassimp-dev libfcl-dev libtbb-dev libmeshoptimizer-dev libhwy-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinygltf-dev
-  libdeflate-dev libxxhash-dev
+  libdeflate-dev libxxhash-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
 missing=()

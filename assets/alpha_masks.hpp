@@ -1,0 +1,29 @@
+#pragma once
+/// @file Procedural 64x64 foliage silhouettes for alpha-tested cards (binary alpha, cutoff 0.5).
+/// Each mask is built once and shared, so every asset using it refers to the same object.
+/// Texture space: u to the right, v down (row 0 at the top of the card).
+#include <memory>
+
+#include "core/mesh.hpp"
+
+namespace silva::assets {
+
+/// Side length of every procedural mask, in texels.
+inline constexpr int kMaskSize = 64;
+
+/// A cluster of pointed broadleaf leaves around the card centre.
+std::shared_ptr<const AlphaMask> leaf_cluster_mask();
+
+/// A conifer needle spray: a stem along v (base at v = 1) with needles angled towards the tip.
+std::shared_ptr<const AlphaMask> needle_spray_mask();
+
+/// Grass blades rising from the card's bottom edge (v = 1) and tapering to points.
+std::shared_ptr<const AlphaMask> grass_blades_mask();
+
+/// A fern frond: a rachis along v (base at v = 1) with paired leaflets, longest mid-frond.
+std::shared_ptr<const AlphaMask> fern_frond_mask();
+
+/// Small rounded shrub leaves scattered over the card.
+std::shared_ptr<const AlphaMask> shrub_leaves_mask();
+
+}  // namespace silva::assets

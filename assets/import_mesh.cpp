@@ -1,0 +1,181 @@
+#include "assets/import_mesh.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/error.hpp"
+
+namespace silva::assets {
+
+namespace {
+
+/// The material surfaces of a role use when the file's material name is not a core material.
+Material default_material(Role role) {
+  switch (role) {
+    case Role::TreeTrunk: return Material::BarkBroadleaf;
+    case Role::TreeCanopy: return Material::Leaves;
+    case Role::DeadTree: return Material::BarkDead;
+    case Role::Stump: return Material::Wood;
+    case Role::GroundVegetation: return Material::Grass;
+    case Role::Shrub: return Material::ShrubLeaves;
+    case Role::Obstacle: return Material::Rock;
+    case Role::Trail: return Material::Trail;
+    default: return Material::Ground;
+  }
+}
+
+/// Reads one asset file's scene and turns its materials and meshes into Silva meshes.
+class AssetImporter {
+ public:
+  AssetImporter(const std::filesystem::path& file, const std::map<std::string, Role>& parts, bool z_up,
+                const std::string& where)
+      : file_(file), parts_(parts), z_up_(z_up), where_(where) {}
+
+  std::vector<Mesh> run() {
+    if (!std::filesystem::is_regular_file(file_)) fail("not found");
+    scene_ = importer_.ReadFile(file_.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                                    aiProcess_GenSmoothNormals | aiProcess_FlipUVs |
+                                                    aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    if (scene_ == nullptr || scene_->mRootNode == nullptr || (scene_->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+      fail(std::string("cannot be read: ") + importer_.GetErrorString());
+    std::vector<const aiNode*> levels;
+    for (int k = 0;; ++k) {
+      const aiNode* n = scene_->mRootNode->FindNode(("lod" + std::to_string(k)).c_str());
+      if (n == nullptr) break;
+      levels.push_back(n);
+    }
+    if (levels.empty()) levels.push_back(scene_->mRootNode);
+    std::vector<Mesh> lods;
+    for (const aiNode* level : levels) {
+      Mesh m;
+      add_node(*level, global_transform(*level), m);
+      if (m.triangle_count() == 0) fail("level '" + std::string(level->mName.C_Str()) + "' has no triangles");
+      lods.push_back(std::move(m));
+    }
+    return lods;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError("asset file " + file_.string() + " (" + where_ + "): " + what);
+  }
+
+  static aiMatrix4x4 global_transform(const aiNode& node) {
+    aiMatrix4x4 m = node.mTransformation;
+    for (const aiNode* p = node.mParent; p != nullptr; p = p->mParent) m = p->mTransformation * m;
+    return m;
+  }
+
+  /// Assimp (Y up) to Silva (Z up): (x, y, z) -> (x, -z, y); identity for Z-up files.
+  Vec3f to_silva(const aiVector3D& v) const { return z_up_ ? Vec3f(v.x, v.y, v.z) : Vec3f(v.x, -v.z, v.y); }
+
+  void add_node(const aiNode& node, const aiMatrix4x4& transform, Mesh& out) {
+    const aiMatrix3x3 normal_matrix = aiMatrix3x3(transform).Inverse().Transpose();
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) add_mesh(*scene_->mMeshes[node.mMeshes[i]], transform, normal_matrix, out);
+    for (unsigned c = 0; c < node.mNumChildren; ++c)
+      add_node(*node.mChildren[c], transform * node.mChildren[c]->mTransformation, out);
+  }
+
+  void add_mesh(const aiMesh& am, const aiMatrix4x4& transform, const aiMatrix3x3& normal_matrix, Mesh& out) {
+    if (!(am.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;  // points/lines carry no surface
+    const aiMaterial& mat = *scene_->mMaterials[am.mMaterialIndex];
+    const std::string name = mat.GetName().C_Str();
+    const auto role = parts_.find(name);
+    if (role == parts_.end()) fail("part with material '" + name + "' has no class in the manifest's parts");
+    MeshPart part;
+    part.first_index = uint32_t(out.indices.size());
+    part.role = role->second;
+    if (!parse_material(name.c_str(), part.material)) part.material = default_material(part.role);
+    part.mask = mask_of(mat);
+    int two_sided = part.mask ? 1 : 0;
+    mat.Get(AI_MATKEY_TWOSIDED, two_sided);
+    part.double_sided = two_sided != 0;
+
+    const uint32_t base = uint32_t(out.positions.size());
+    for (unsigned v = 0; v < am.mNumVertices; ++v) {
+      out.positions.push_back(to_silva(transform * am.mVertices[v]));
+      aiVector3D n = am.mNormals ? normal_matrix * am.mNormals[v] : aiVector3D(0, 0, 1);
+      const Vec3f ns = to_silva(n);
+      out.normals.push_back(ns.norm() > 0 ? Vec3f(ns.normalized()) : Vec3f::UnitZ());
+      out.uvs.push_back(am.mTextureCoords[0] ? Vec2f(am.mTextureCoords[0][v].x, am.mTextureCoords[0][v].y)
+                                             : Vec2f::Zero());
+    }
+    for (unsigned f = 0; f < am.mNumFaces; ++f) {
+      const aiFace& face = am.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      for (int k = 0; k < 3; ++k) out.indices.push_back(base + face.mIndices[k]);
+    }
+    part.index_count = uint32_t(out.indices.size()) - part.first_index;
+    if (part.index_count > 0) out.parts.push_back(std::move(part));
+  }
+
+  /// The alpha mask of a material, or null when it is not alpha-tested.
+  std::shared_ptr<const AlphaMask> mask_of(const aiMaterial& mat) {
+    aiString mode;
+    if (mat.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS && std::string(mode.C_Str()) == "OPAQUE") return nullptr;
+    aiString path;
+    if (mat.GetTexture(aiTextureType_BASE_COLOR, 0, &path) != AI_SUCCESS &&
+        mat.GetTexture(aiTextureType_DIFFUSE, 0, &path) != AI_SUCCESS)
+      return nullptr;
+    float cutoff = 0.5f;
+    mat.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff);
+    const std::string key = std::string(path.C_Str()) + "|" + std::to_string(cutoff);
+    if (auto it = masks_.find(key); it != masks_.end()) return it->second;
+    const cv::Mat image = read_texture(path.C_Str());
+    std::shared_ptr<AlphaMask> mask;
+    if (image.channels() == 4) {
+      cv::Mat alpha;
+      cv::extractChannel(image, alpha, 3);
+      if (alpha.depth() != CV_8U) alpha.convertTo(alpha, CV_8U, 1.0 / 257.0);
+      mask = std::make_shared<AlphaMask>();
+      mask->width = alpha.cols;
+      mask->height = alpha.rows;
+      mask->cutoff = cutoff;
+      for (int y = 0; y < alpha.rows; ++y) mask->alpha.insert(mask->alpha.end(), alpha.ptr<uint8_t>(y), alpha.ptr<uint8_t>(y) + alpha.cols);
+    }
+    masks_[key] = mask;
+    return mask;
+  }
+
+  /// Decodes a texture: embedded ("*N" or by name) or a file relative to the asset.
+  cv::Mat read_texture(const std::string& ref) const {
+    cv::Mat image;
+    if (const aiTexture* t = scene_->GetEmbeddedTexture(ref.c_str())) {
+      if (t->mHeight == 0) {
+        const cv::Mat bytes(1, int(t->mWidth), CV_8U, t->pcData);
+        image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+      } else {
+        image.create(int(t->mHeight), int(t->mWidth), CV_8UC4);  // aiTexel is BGRA
+        std::memcpy(image.data, t->pcData, size_t(t->mWidth) * t->mHeight * 4);
+      }
+    } else {
+      image = cv::imread((file_.parent_path() / ref).string(), cv::IMREAD_UNCHANGED);
+    }
+    if (image.empty()) fail("texture '" + ref + "' cannot be decoded");
+    return image;
+  }
+
+  const std::filesystem::path& file_;
+  const std::map<std::string, Role>& parts_;
+  bool z_up_;
+  const std::string& where_;
+  Assimp::Importer importer_;
+  const aiScene* scene_ = nullptr;
+  std::map<std::string, std::shared_ptr<const AlphaMask>> masks_;
+};
+
+}  // namespace
+
+std::vector<Mesh> import_asset_lods(const std::filesystem::path& file, const std::map<std::string, Role>& parts,
+                                    bool z_up, const std::string& where) {
+  return AssetImporter(file, parts, z_up, where).run();
+}
+
+}  // namespace silva::assets

@@ -1,0 +1,204 @@
+#include "assets/manifest.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+
+namespace silva::assets {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormat = "silva-asset-library";
+constexpr int kVersion = 1;
+constexpr const char* kShapeNames[] = {"none", "cylinder", "capsule", "box", "sphere"};
+
+json vec_json(const Vec3f& v) { return {v.x(), v.y(), v.z()}; }
+
+json proxy_json(const CollisionProxy& p) {
+  json j = {{"shape", kShapeNames[int(p.shape)]}};
+  switch (p.shape) {
+    case CollisionProxy::Shape::None:
+      break;
+    case CollisionProxy::Shape::Cylinder:
+    case CollisionProxy::Shape::Capsule:
+      j["center"] = vec_json(p.center), j["axis"] = vec_json(p.axis), j["radius"] = p.radius, j["height"] = p.height;
+      break;
+    case CollisionProxy::Shape::Sphere:
+      j["center"] = vec_json(p.center), j["radius"] = p.radius;
+      break;
+    case CollisionProxy::Shape::Box:
+      j["center"] = vec_json(p.center), j["half_extents"] = vec_json(p.half_extents);
+      break;
+  }
+  return j;
+}
+
+/// Validating reader of one JSON object; every error names the file and the key path.
+class Reader {
+ public:
+  Reader(const std::filesystem::path& file, const json& obj, std::string where)
+      : file_(file), obj_(obj), where_(std::move(where)) {
+    if (!obj_.is_object()) fail("", "must be an object");
+  }
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw InputError(file_.string() + ": " + where_ + (key.empty() ? "" : "." + key) + " " + what);
+  }
+  const json& need(const char* key) const {
+    auto it = obj_.find(key);
+    if (it == obj_.end()) fail(key, "is missing");
+    return *it;
+  }
+  bool has(const char* key) const { return obj_.contains(key); }
+  std::string string(const char* key) const {
+    const json& v = need(key);
+    if (!v.is_string() || v.get<std::string>().empty()) fail(key, "must be a non-empty string");
+    return v.get<std::string>();
+  }
+  float number(const char* key, float lo, float hi) const {
+    const json& v = need(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo || v.get<double>() > hi)
+      fail(key, "must be a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v.get<float>();
+  }
+  Vec3f vec3(const char* key) const {
+    const json& v = need(key);
+    if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) {
+          return e.is_number() && std::isfinite(e.get<double>());
+        }))
+      fail(key, "must be an array of 3 finite numbers");
+    return Vec3f(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
+  }
+  Role role(const json& v, const std::string& key) const {
+    Role r;
+    if (!v.is_string() || !parse_role(v.get<std::string>(), r))
+      fail(key, "must be a class name (background, ground, trail, tree_trunk, tree_canopy, dead_tree, stump, "
+                "ground_vegetation, shrub, obstacle)");
+    return r;
+  }
+  const std::string& where() const { return where_; }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  const std::filesystem::path& file_;
+  const json& obj_;
+  std::string where_;
+};
+
+CollisionProxy read_proxy(const Reader& r) {
+  CollisionProxy p;
+  const std::string shape = r.string("shape");
+  const auto* it = std::find(std::begin(kShapeNames), std::end(kShapeNames), shape);
+  if (it == std::end(kShapeNames)) r.fail("shape", "must be one of none, cylinder, capsule, box, sphere");
+  p.shape = CollisionProxy::Shape(it - std::begin(kShapeNames));
+  constexpr float kMax = 1e4f;
+  if (p.shape == CollisionProxy::Shape::None) return p;
+  p.center = r.vec3("center");
+  if (p.shape == CollisionProxy::Shape::Box) {
+    p.half_extents = r.vec3("half_extents");
+    if (p.half_extents.minCoeff() <= 0) r.fail("half_extents", "must be positive");
+    return p;
+  }
+  p.radius = r.number("radius", 1e-6f, kMax);
+  if (p.shape == CollisionProxy::Shape::Sphere) return p;
+  p.height = r.number("height", 0, kMax);
+  p.axis = r.vec3("axis");
+  if (std::abs(p.axis.norm() - 1.0f) > 1e-4f) r.fail("axis", "must be a unit vector");
+  return p;
+}
+
+ManifestEntry read_entry(const Reader& r) {
+  ManifestEntry e;
+  e.name = r.string("name");
+  e.file = r.string("file");
+  if (std::filesystem::path(e.file).is_absolute()) r.fail("file", "must be relative to the manifest's folder");
+  if (!parse_kind(r.string("kind"), e.kind))
+    r.fail("kind", "must be one of conifer_tree, broadleaf_tree, dead_tree, stump, grass, fern, shrub, rock, log");
+  e.role = r.role(r.need("class"), "class");
+  if (r.has("up_axis")) {
+    const std::string up = r.string("up_axis");
+    if (up != "y" && up != "z") r.fail("up_axis", "must be \"y\" or \"z\"");
+    e.z_up = up == "z";
+  }
+  const json& parts = r.need("parts");
+  if (!parts.is_object() || parts.empty()) r.fail("parts", "must be a non-empty object {material name: class}");
+  for (const auto& [material, cls] : parts.items()) e.parts[material] = r.role(cls, "parts." + material);
+  e.proxy = read_proxy(Reader(r.file(), r.need("collision"), r.where() + ".collision"));
+  const json& sizes = r.need("lod_screen_sizes");
+  if (!sizes.is_array()) r.fail("lod_screen_sizes", "must be an array of numbers");
+  for (const json& s : sizes) {
+    if (!s.is_number() || !(s.get<double>() > 0 && s.get<double>() <= 1) ||
+        (!e.lod_screen_sizes.empty() && s.get<float>() >= e.lod_screen_sizes.back()))
+      r.fail("lod_screen_sizes", "must be descending numbers in (0, 1]");
+    e.lod_screen_sizes.push_back(s.get<float>());
+  }
+  return e;
+}
+
+}  // namespace
+
+ManifestEntry manifest_entry(const Asset& asset) {
+  ManifestEntry e;
+  e.name = asset.name;
+  e.file = asset.file;
+  e.kind = asset.kind;
+  e.role = asset.role;
+  for (const MeshPart& part : asset.lods.at(0).parts) {
+    auto [it, inserted] = e.parts.try_emplace(material_name(part.material), part.role);
+    if (!inserted && it->second != part.role)
+      throw InputError("asset " + asset.name + ": material " + it->first + " is used with two classes");
+  }
+  e.proxy = asset.proxy;
+  e.lod_screen_sizes = asset.lod_screen_sizes;
+  return e;
+}
+
+void write_manifest(const std::filesystem::path& path, std::span<const ManifestEntry> entries) {
+  json assets = json::array();
+  for (const ManifestEntry& e : entries) {
+    json parts = json::object();
+    for (const auto& [material, role] : e.parts) parts[material] = role_name(role);
+    assets.push_back({{"name", e.name},
+                      {"file", e.file},
+                      {"kind", kind_name(e.kind)},
+                      {"class", role_name(e.role)},
+                      {"up_axis", e.z_up ? "z" : "y"},
+                      {"parts", parts},
+                      {"collision", proxy_json(e.proxy)},
+                      {"lod_screen_sizes", e.lod_screen_sizes}});
+  }
+  const std::string text = json{{"format", kFormat}, {"version", kVersion}, {"assets", assets}}.dump(2) + "\n";
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  f << text;
+  f.close();
+  if (!f) throw IoError("cannot write " + path.string());
+}
+
+std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path.string() + ": asset library manifest not found or unreadable");
+  json doc = json::parse(f, nullptr, false);
+  if (doc.is_discarded()) throw InputError(path.string() + ": not valid JSON");
+  const Reader top(path, doc, "library");
+  if (!top.need("format").is_string() || top.need("format").get<std::string>() != kFormat)
+    top.fail("format", std::string("must be \"") + kFormat + "\"");
+  if (!top.need("version").is_number_integer() || top.need("version").get<int>() != kVersion)
+    top.fail("version", "must be " + std::to_string(kVersion));
+  const json& assets = top.need("assets");
+  if (!assets.is_array() || assets.empty()) top.fail("assets", "must be a non-empty array");
+  std::vector<ManifestEntry> out;
+  std::set<std::string> names;
+  for (size_t i = 0; i < assets.size(); ++i) {
+    const Reader r(path, assets[i], "assets[" + std::to_string(i) + "]");
+    out.push_back(read_entry(r));
+    if (!names.insert(out.back().name).second) r.fail("name", "'" + out.back().name + "' is not unique");
+  }
+  return out;
+}
+
+}  // namespace silva::assets

@@ -1,0 +1,48 @@
+#pragma once
+/// @file library.json, the asset library manifest (schema in assets/README.md):
+///
+///   {"format": "silva-asset-library", "version": 1, "assets": [{
+///     "name": "conifer_00",             unique asset name
+///     "file": "conifer_00.glb",         mesh file relative to library.json (.glb/.gltf/.fbx/.obj ...)
+///     "kind": "conifer_tree",           conifer_tree|broadleaf_tree|dead_tree|stump|grass|fern|shrub|rock|log
+///     "class": "tree_trunk",            role of the object node (ontology role name)
+///     "up_axis": "y",                   optional: "y" (default; glTF/assimp convention) or "z" (Silva)
+///     "parts": {"bark_conifer": "tree_trunk", "needles": "tree_canopy"},  material name -> role
+///     "collision": {"shape": "cylinder", "center": [x,y,z], "radius": r, "height": h, "axis": [0,0,1]},
+///                  sphere: center, radius; box: center, half_extents; capsule: as cylinder
+///                  (height = length of the core segment); none: no other key
+///     "lod_screen_sizes": [0.25, 0.1, 0.04]   one per LOD after the first, descending, in (0, 1]
+///   }, ...]}
+#include <filesystem>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "assets/library.hpp"
+
+namespace silva::assets {
+
+/// One asset's entry in library.json.
+struct ManifestEntry {
+  std::string name;                     ///< Unique asset name.
+  std::string file;                     ///< Mesh file, relative to the manifest's folder.
+  AssetKind kind = AssetKind::Rock;     ///< Placement kind.
+  Role role = Role::Obstacle;           ///< Class of the object node.
+  bool z_up = false;                    ///< File already in Silva's Z-up axes ("up_axis": "z").
+  std::map<std::string, Role> parts;    ///< Material name -> class of the parts using it.
+  CollisionProxy proxy;                 ///< Collision proxy.
+  std::vector<float> lod_screen_sizes;  ///< LOD thresholds (fraction of image height).
+};
+
+/// The manifest entry of a generated asset (parts mapping from its materials' names).
+/// Throws InputError if one material name is used with two roles.
+ManifestEntry manifest_entry(const Asset& asset);
+
+/// Writes library.json (deterministic bytes); throws IoError naming the path.
+void write_manifest(const std::filesystem::path& path, std::span<const ManifestEntry> entries);
+
+/// Reads and validates library.json; throws InputError naming the file and key on any problem.
+std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path);
+
+}  // namespace silva::assets

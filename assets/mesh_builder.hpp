@@ -1,0 +1,52 @@
+#pragma once
+/// @file Incremental construction of a Mesh part by part, plus the primitive shapes the
+/// procedural generators are made of (tapered tubes, discs, cards, icospheres).
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/mesh.hpp"
+
+namespace silva::assets {
+
+/// Appends vertices and triangles to a Mesh, grouping triangles into parts.
+class MeshBuilder {
+ public:
+  /// Starts a new part; the following triangles belong to it until the next begin_part.
+  void begin_part(Role role, Material material, std::shared_ptr<const AlphaMask> mask = nullptr,
+                  bool double_sided = false);
+  /// Adds a vertex (normal is normalised) and returns its index.
+  uint32_t vertex(const Vec3f& p, const Vec3f& n, const Vec2f& uv);
+  /// Adds a counter-clockwise triangle to the current part.
+  void triangle(uint32_t a, uint32_t b, uint32_t c);
+  /// Finishes and returns the mesh (empty parts dropped).
+  Mesh finish();
+
+ private:
+  Mesh mesh_;
+};
+
+/// A point on a tube's centre line with the tube radius there.
+struct TubeNode {
+  Vec3f p;   ///< Centre-line point.
+  float r;   ///< Radius at the point (m).
+};
+
+/// Adds a closed-side tube along a polyline (>= 2 nodes) with `segments` sides; smooth normals
+/// account for the taper; u goes around (seam duplicated), v along the length in metres / 2.
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments);
+
+/// Adds a flat disc (fan) of `segments` sides facing `normal`.
+void add_disc(MeshBuilder& b, const Vec3f& center, const Vec3f& normal, float radius, int segments);
+
+/// Adds a single quad card: centre, half-width vector `right` and half-height vector `up`;
+/// uv (0,0) at centre - right + up (top-left), front face towards right x up.
+void add_card(MeshBuilder& b, const Vec3f& center, const Vec3f& right, const Vec3f& up);
+
+/// A unit icosphere (radius 1) with `subdivisions` levels; shared vertices, outward normals.
+Mesh unit_icosphere(int subdivisions);
+
+/// Two unit vectors perpendicular to `axis` and to each other (a right-handed frame).
+void perpendicular_frame(const Vec3f& axis, Vec3f& u, Vec3f& v);
+
+}  // namespace silva::assets

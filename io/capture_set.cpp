@@ -1,0 +1,71 @@
+#include "io/capture_set.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "io/exr_writer.hpp"
+#include "io/label_images.hpp"
+#include "io/png_writer.hpp"
+
+namespace silva::io {
+
+namespace {
+
+std::vector<uint8_t> bytes_of(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
+
+/// Encodes one output type into its file(s).
+std::vector<EncodedFile> encode_one(OutputType t, const render::GBuffer& g, std::span<const uint8_t> rgb,
+                                    const Ontology& ontology, int frame) {
+  const int w = g.width, h = g.height;
+  const std::string folder = output_type_name(t);
+  auto png = [&](std::vector<uint8_t> bytes) {
+    return std::vector<EncodedFile>{{frame_file(folder, frame, "png"), std::move(bytes)}};
+  };
+  switch (t) {
+    case OutputType::Rgb:
+      return png(encode_png_rgb8(rgb, w, h));
+    case OutputType::Semantic:
+      return png(encode_png_grey8(semantic_image(g, ontology), w, h));
+    case OutputType::SemanticColor:
+      return png(encode_png_rgb8(semantic_color_image(g, ontology), w, h));
+    case OutputType::Instance: {
+      const InstanceImage inst = instance_image(g, ontology);
+      return {{frame_file(folder, frame, "png"), encode_png_grey16(inst.pixels, w, h)},
+              {frame_file(folder, frame, "json"), bytes_of(instance_table_json(inst.entries))}};
+    }
+    case OutputType::Depth:
+      return png(encode_png_grey16(depth_mm_image(g), w, h));
+    case OutputType::DepthExr:
+      return {{frame_file(folder, frame, "exr"), encode_exr_y(g.depth, w, h)}};
+    case OutputType::DepthPreview:
+      return png(encode_png_grey8(depth_preview_image(g), w, h));
+    case OutputType::Normal:
+      return png(encode_png_rgb8(normal_image(g), w, h));
+  }
+  throw std::logic_error("encode_one: unknown output type");
+}
+
+}  // namespace
+
+std::string frame_file(const std::string& folder, int frame, const std::string& ext) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%06d", frame);
+  return folder + "/" + name + "." + ext;
+}
+
+EncodedSet encode_capture_set(const render::GBuffer& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
+                              const OutputSelection& selection, int frame) {
+  std::vector<OutputType> todo;
+  for (int t = 0; t < kOutputTypeCount; ++t)
+    if (selection.has(OutputType(t))) todo.push_back(OutputType(t));
+  std::vector<std::vector<EncodedFile>> parts(todo.size());
+  tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) { parts[k] = encode_one(todo[k], gbuffer, rgb, ontology, frame); });
+  EncodedSet out;
+  for (auto& files : parts)
+    for (auto& f : files) out.push_back(std::move(f));
+  return out;
+}
+
+}  // namespace silva::io

@@ -1,0 +1,58 @@
+#include "render/bin.hpp"
+
+#include <algorithm>
+
+namespace silva::render {
+
+namespace {
+
+/// False when some edge is negative at all four corners of the pixel rectangle (no sample inside).
+bool may_cover(const RasterTri& t, int x0, int y0, int x1, int y1) {
+  for (const PixelPlane& e : t.edge) {
+    const double top = std::max(e.at(x0, y0), e.at(x1, y0));
+    const double bottom = std::max(e.at(x0, y1), e.at(x1, y1));
+    if (std::max(top, bottom) < 0.0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TileGrid TileGrid::make(int width, int height, int tile_size) {
+  TileGrid g;
+  g.width = width;
+  g.height = height;
+  g.tile_size = tile_size;
+  g.tiles_x = (width + tile_size - 1) / tile_size;
+  g.tiles_y = (height + tile_size - 1) / tile_size;
+  return g;
+}
+
+void GeometryStore::reset(int tile_count) {
+  tris.clear();
+  alphas.clear();
+  if (bins.size() != size_t(tile_count)) bins.resize(size_t(tile_count));
+  for (auto& b : bins) b.clear();
+  counters = SetupCounters{};
+  bin_entries = 0;
+}
+
+void GeometryStore::bin_from(size_t first, const TileGrid& grid) {
+  const int ts = grid.tile_size;
+  for (size_t i = first; i < tris.size(); ++i) {
+    const RasterTri& t = tris[i];
+    const int tx0 = t.x0 / ts, tx1 = t.x1 / ts, ty0 = t.y0 / ts, ty1 = t.y1 / ts;
+    const bool single = tx0 == tx1 && ty0 == ty1;
+    for (int ty = ty0; ty <= ty1; ++ty) {
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        if (!single && !may_cover(t, std::max(t.x0, tx * ts), std::max(t.y0, ty * ts),
+                                  std::min(t.x1, tx * ts + ts - 1), std::min(t.y1, ty * ts + ts - 1)))
+          continue;
+        bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(uint32_t(i));
+        ++bin_entries;
+      }
+    }
+  }
+}
+
+}  // namespace silva::render

@@ -1,0 +1,38 @@
+#pragma once
+/// @file Binning: screen tiles and the per-worker lists of triangles touching each tile.
+#include <cstdint>
+#include <vector>
+
+#include "render/raster_triangle.hpp"
+#include "render/triangle_setup.hpp"
+
+namespace silva::render {
+
+/// The screen cut into square tiles, row-major.
+struct TileGrid {
+  int width = 0;      ///< Image width in pixels.
+  int height = 0;     ///< Image height in pixels.
+  int tile_size = 64; ///< Tile side in pixels.
+  int tiles_x = 0;    ///< Tiles across.
+  int tiles_y = 0;    ///< Tiles down.
+  /// Grid covering a width x height image with tile_size tiles.
+  static TileGrid make(int width, int height, int tile_size);
+  /// Number of tiles.
+  int count() const { return tiles_x * tiles_y; }
+};
+
+/// One worker's set-up triangles and, per tile, the indices of those that touch it.
+/// Lives in thread-local storage and keeps its capacity from frame to frame.
+struct GeometryStore {
+  std::vector<RasterTri> tris;              ///< Set-up screen triangles.
+  std::vector<AlphaAttrib> alphas;          ///< Alpha-test data referenced by tris.
+  std::vector<std::vector<uint32_t>> bins;  ///< Per tile: indices into tris.
+  SetupCounters counters;                   ///< Front-end counters.
+  uint64_t bin_entries = 0;                 ///< (triangle, tile) pairs added.
+  /// Empties the store for a new pass over `tile_count` tiles (keeps capacity).
+  void reset(int tile_count);
+  /// Adds tris[first..end) to the bins of every tile whose samples they may cover.
+  void bin_from(size_t first, const TileGrid& grid);
+};
+
+}  // namespace silva::render

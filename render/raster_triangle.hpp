@@ -1,0 +1,39 @@
+#pragma once
+/// @file A screen triangle set up for tile rasterisation (fixed-point edges, depth plane, key).
+#include <cstdint>
+
+#include "core/mesh.hpp"
+#include "render/view_projection.hpp"
+
+namespace silva::render {
+
+/// Index value of RasterTri::alpha for a triangle without an alpha mask.
+inline constexpr uint32_t kNoAlpha = 0xffffffffu;
+
+/// One screen triangle with A > 0 (raster_conventions.hpp). Edge values are exact integers.
+struct RasterTri {
+  PixelPlane edge[3];      ///< E_i at pixel (x, y) incl. fill-rule bias; inside when all >= 0.
+  PixelPlane depth;        ///< Reverse depth d at pixel centres.
+  double depth_max = 0;    ///< Conservative upper bound of d over the triangle (early rejection).
+  int32_t x0 = 0, y0 = 0;  ///< First covered-candidate pixel (inclusive, inside the image).
+  int32_t x1 = 0, y1 = 0;  ///< Last covered-candidate pixel (inclusive, inside the image).
+  uint64_t key = 0;        ///< instance << 32 | triangle: lower wins equal depth.
+  uint32_t alpha = kNoAlpha;  ///< Index of the AlphaAttrib in the same store, or kNoAlpha.
+};
+
+/// What alpha testing needs at a pixel: barycentric planes, vertex uvs and the mask.
+struct AlphaAttrib {
+  PixelPlane n1, n2, den;       ///< b1 = n1/den, b2 = n2/den at pixel centres.
+  Vec2f uv0, uv1, uv2;          ///< Vertex texture coordinates.
+  const AlphaMask* mask = nullptr;  ///< Non-owning; the Scene outlives the pass.
+  /// True when the mask is opaque at pixel (x, y)'s centre (nearest texel, repeat wrap).
+  bool opaque_at(double x, double y) const {
+    const double d = den.at(x, y);
+    const double b1 = n1.at(x, y) / d, b2 = n2.at(x, y) / d;
+    const double u = double(uv0.x()) + b1 * double(uv1.x() - uv0.x()) + b2 * double(uv2.x() - uv0.x());
+    const double v = double(uv0.y()) + b1 * double(uv1.y() - uv0.y()) + b2 * double(uv2.y() - uv0.y());
+    return mask->opaque(float(u), float(v));
+  }
+};
+
+}  // namespace silva::render

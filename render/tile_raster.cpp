@@ -1,0 +1,156 @@
+// The per-target kernel is compiled once per Highway target (foreach_target) and chosen at
+// run time. Every output-affecting operation is exact or correctly rounded (integer-valued
+// double adds/muls for edges, separate mul and add for depth), so all targets agree bit for bit.
+#include "render/tile_raster.hpp"
+
+#include <algorithm>
+
+#include "render/raster_conventions.hpp"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "render/tile_raster.cpp"
+#include "hwy/foreach_target.h"  // IWYU pragma: keep
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace silva::render::HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// Lanes of doubles, at most one 8-pixel block row.
+using DTag = hn::CappedTag<double, kDepthBlockSize>;
+
+/// Minimum of the stored depths of one block (clipped to the tile extent).
+double block_minimum(const TileScratch& s, const TileJob& job, int bx, int by) {
+  double m = s.depth[size_t(by * kDepthBlockSize) * size_t(job.stride) + size_t(bx * kDepthBlockSize)];
+  const int y_end = std::min(job.h, (by + 1) * kDepthBlockSize);
+  const int x_end = std::min(job.w, (bx + 1) * kDepthBlockSize);
+  for (int y = by * kDepthBlockSize; y < y_end; ++y)
+    for (int x = bx * kDepthBlockSize; x < x_end; ++x) m = std::min(m, s.depth[size_t(y) * size_t(job.stride) + size_t(x)]);
+  return m;
+}
+
+/// Resolves lanes with a depth tie or an alpha mask one by one; returns the writes made.
+uint64_t write_lanes_scalar(const RasterTri& t, const AlphaAttrib* alpha, const double* dv, const uint8_t* win_bits,
+                            const uint8_t* tie_bits, size_t lanes, double px0, double py, double* dp, uint64_t* kp) {
+  uint64_t writes = 0;
+  for (size_t k = 0; k < lanes; ++k) {
+    const bool win = (win_bits[k / 8] >> (k % 8)) & 1;
+    const bool tie = (tie_bits[k / 8] >> (k % 8)) & 1;
+    bool w = win || (tie && t.key < kp[k]);
+    if (w && alpha) w = alpha->opaque_at(px0 + double(k), py);
+    if (!w) continue;
+    dp[k] = dv[k];
+    kp[k] = t.key;
+    ++writes;
+  }
+  return writes;
+}
+
+/// Rasterises one triangle into the blocks of the tile it overlaps.
+void raster_triangle(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
+                     TileCounters& counters) {
+  const DTag d;
+  const hn::RebindToUnsigned<DTag> du;
+  const size_t N = hn::Lanes(d);
+  const int lx0 = std::max(t.x0 - job.x0, 0), lx1 = std::min(t.x1 - job.x0, job.w - 1);
+  const int ly0 = std::max(t.y0 - job.y0, 0), ly1 = std::min(t.y1 - job.y0, job.h - 1);
+  if (lx0 > lx1 || ly0 > ly1) return;
+  const int block_stride = job.stride / kDepthBlockSize;
+  const auto zero = hn::Zero(d);
+  const auto iota = hn::Iota(d, 0.0);
+  const auto ea0 = hn::Set(d, t.edge[0].a), ea1 = hn::Set(d, t.edge[1].a), ea2 = hn::Set(d, t.edge[2].a);
+  const auto da = hn::Set(d, t.depth.a);
+  const auto key = hn::Set(du, t.key);
+  alignas(64) double dv[kDepthBlockSize];
+  uint8_t win_bits[8], tie_bits[8];
+  for (int by = ly0 / kDepthBlockSize; by <= ly1 / kDepthBlockSize; ++by) {
+    for (int bx = lx0 / kDepthBlockSize; bx <= lx1 / kDepthBlockSize; ++bx) {
+      double& bmin = s.block_min[size_t(by) * size_t(block_stride) + size_t(bx)];
+      if (t.depth_max < bmin) continue;  // behind everything already in this block
+      bool wrote = false;
+      const int bx0 = bx * kDepthBlockSize;
+      const int x_begin = bx0 + int((std::max(lx0, bx0) - bx0) / int(N) * int(N));
+      const int x_end = std::min({bx0 + kDepthBlockSize, lx1 + 1, job.w});
+      const int y_end = std::min((by + 1) * kDepthBlockSize - 1, ly1);
+      for (int y = std::max(ly0, by * kDepthBlockSize); y <= y_end; ++y) {
+        const double py = double(job.y0 + y);
+        const auto e0_row = hn::Set(d, t.edge[0].c + t.edge[0].b * py);
+        const auto e1_row = hn::Set(d, t.edge[1].c + t.edge[1].b * py);
+        const auto e2_row = hn::Set(d, t.edge[2].c + t.edge[2].b * py);
+        const auto d_row = hn::Set(d, t.depth.c + t.depth.b * py);
+        for (int x = x_begin; x < x_end; x += int(N)) {
+          const double px0 = double(job.x0 + x);
+          const auto vx = hn::Add(hn::Set(d, px0), iota);
+          auto in = hn::Ge(hn::Add(e0_row, hn::Mul(ea0, vx)), zero);
+          in = hn::And(in, hn::Ge(hn::Add(e1_row, hn::Mul(ea1, vx)), zero));
+          in = hn::And(in, hn::Ge(hn::Add(e2_row, hn::Mul(ea2, vx)), zero));
+          if (x + int(N) > x_end) in = hn::And(in, hn::FirstN(d, size_t(x_end - x)));
+          if (hn::AllFalse(d, in)) continue;
+          counters.fragments += hn::CountTrue(d, in);
+          const auto depth = hn::Add(d_row, hn::Mul(da, vx));
+          const size_t off = size_t(y) * size_t(job.stride) + size_t(x);
+          double* dp = s.depth.data() + off;
+          uint64_t* kp = s.key.data() + off;
+          const auto stored = hn::LoadU(d, dp);
+          const auto win = hn::And(in, hn::Gt(depth, stored));
+          const auto tie = hn::And(in, hn::Eq(depth, stored));
+          if (alpha == nullptr && hn::AllFalse(d, tie)) {
+            if (hn::AllFalse(d, win)) continue;
+            hn::BlendedStore(depth, win, d, dp);
+            hn::BlendedStore(key, hn::RebindMask(du, win), du, kp);
+            counters.writes += hn::CountTrue(d, win);
+            wrote = true;
+            continue;
+          }
+          hn::Store(depth, d, dv);
+          hn::StoreMaskBits(d, win, win_bits);
+          hn::StoreMaskBits(d, tie, tie_bits);
+          const uint64_t n = write_lanes_scalar(t, alpha, dv, win_bits, tie_bits, N, px0, py, dp, kp);
+          counters.writes += n;
+          wrote = wrote || n > 0;
+        }
+      }
+      if (wrote) bmin = block_minimum(s, job, bx, by);
+    }
+  }
+}
+
+/// Clears the tile and rasterises every source triangle into it.
+void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t source_count, TileScratch& s,
+                       TileCounters& counters) {
+  const size_t pixels = size_t(job.stride) * size_t(job.stride);
+  const size_t blocks = pixels / size_t(kDepthBlockSize * kDepthBlockSize);
+  s.depth.assign(pixels, job.depth_clear);
+  s.key.assign(pixels, kNoKey);
+  s.block_min.assign(blocks, job.depth_clear);
+  for (size_t k = 0; k < source_count; ++k) {
+    const TileSource& src = sources[k];
+    for (size_t i = 0; i < src.count; ++i) {
+      const RasterTri& t = src.tris[src.indices[i]];
+      raster_triangle(t, t.alpha == kNoAlpha ? nullptr : &src.alphas[t.alpha], job, s, counters);
+    }
+  }
+}
+
+/// The target this copy of the kernel was compiled for.
+int64_t ActiveTargetImpl() { return HWY_TARGET; }
+
+}  // namespace silva::render::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace silva::render {
+
+HWY_EXPORT(RasteriseTileImpl);
+HWY_EXPORT(ActiveTargetImpl);
+
+void rasterise_tile(const TileJob& job, std::span<const TileSource> sources, TileScratch& scratch,
+                    TileCounters& counters) {
+  HWY_DYNAMIC_DISPATCH(RasteriseTileImpl)(job, sources.data(), sources.size(), scratch, counters);
+}
+
+int64_t raster_simd_target() { return HWY_DYNAMIC_DISPATCH(ActiveTargetImpl)(); }
+
+}  // namespace silva::render
+#endif  // HWY_ONCE

@@ -1,0 +1,154 @@
+#include "render/triangle_setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/clip.hpp"
+#include "render/raster_conventions.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// A vertex snapped to the sub-pixel grid.
+struct Snapped {
+  int64_t x = 0;  ///< u * 256, rounded.
+  int64_t y = 0;  ///< v * 256, rounded.
+};
+
+/// Offset of a pixel centre inside its pixel, in sub-pixel units.
+constexpr int64_t kHalf = kSubpixelScale / 2;
+
+/// Floor of a / b for b > 0.
+int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+/// Value of a plane at a point.
+double plane_value(const Vec4d& plane, const Vec3d& p) {
+  return plane.x() * p.x() + plane.y() * p.y() + plane.z() * p.z() + plane.w();
+}
+
+/// Edge function of a->b (A > 0 orientation) with its fill-rule bias, over pixel indices.
+PixelPlane edge_plane(const Snapped& a, const Snapped& b) {
+  const int64_t dx = b.x - a.x, dy = b.y - a.y;
+  const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+  const int64_t c = dx * (kHalf - a.y) - dy * (kHalf - a.x) - (top_left ? 0 : 1);
+  return PixelPlane{double(c), double(-kSubpixelScale * dy), double(kSubpixelScale * dx)};
+}
+
+/// True when all three (exact) edge values are inside at pixel (x, y).
+bool covers(const PixelPlane (&edge)[3], int x, int y) {
+  for (const PixelPlane& e : edge)
+    if (e.at(double(x), double(y)) < 0.0) return false;
+  return true;
+}
+
+/// Lazily computed per-source-triangle data shared by its screen triangles.
+struct SharedPlanes {
+  bool ready = false;       ///< Planes computed.
+  PixelPlane depth;         ///< Reverse-depth plane.
+  double depth_max = 0;     ///< Conservative maximum of d.
+  uint32_t alpha = kNoAlpha;  ///< AlphaAttrib index.
+};
+
+}  // namespace
+
+SetupView::SetupView(const ViewProjection& v) : view(v) {
+  frustum_count = view.frustum_planes(frustum);
+  clip_count = view.clip_planes(clip);
+}
+
+int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
+                   std::vector<AlphaAttrib>& alphas, SetupCounters& counters) {
+  const ViewProjection& view = sv.view;
+  const Vec3d& p0 = in.p[0];
+  const Vec3d& p1 = in.p[1];
+  const Vec3d& p2 = in.p[2];
+  if (!(p0.allFinite() && p1.allFinite() && p2.allFinite())) return 0;
+  for (int k = 0; k < sv.frustum_count; ++k) {
+    const Vec4d& pl = sv.frustum[k];
+    if (plane_value(pl, p0) < 0.0 && plane_value(pl, p1) < 0.0 && plane_value(pl, p2) < 0.0) return 0;
+  }
+  const Vec3d n = (p1 - p0).cross(p2 - p0);
+  const double facing = view.facing(p0, n);
+  if (!(facing != 0.0) || !std::isfinite(facing)) return 0;  // edge-on, degenerate or NaN
+  const bool front = facing < 0.0;
+  if (!front && in.cull_back) return 0;
+  ++counters.after_cull;
+
+  Vec3d poly[kMaxClippedVertices] = {p0, p1, p2};
+  int count = 3;
+  bool needs_clip = false;
+  for (int k = 0; k < sv.clip_count && !needs_clip; ++k)
+    for (int i = 0; i < 3; ++i) needs_clip = needs_clip || plane_value(sv.clip[k], poly[i]) < 0.0;
+  if (needs_clip) {
+    ++counters.clipped;
+    count = clip_polygon(sv.clip, sv.clip_count, poly, count);
+    if (count == 0) return 0;
+  }
+
+  Snapped s[kMaxClippedVertices];
+  double vertex_depth_max = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < count; ++i) {
+    const Vec2d uv = view.project(poly[i]);
+    s[i] = Snapped{std::llround(uv.x() * double(kSubpixelScale)), std::llround(uv.y() * double(kSubpixelScale))};
+    vertex_depth_max = std::max(vertex_depth_max, view.depth_value(poly[i]));
+  }
+
+  SharedPlanes shared;
+  int emitted = 0;
+  for (int k = 1; k + 1 < count; ++k) {
+    Snapped a = s[0], b = s[k], c = s[k + 1];
+    const int64_t area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    if (front) {
+      if (area >= 0) continue;  // sliver flipped by snapping
+      std::swap(b, c);
+    } else if (area <= 0) {
+      continue;
+    }
+    // Pixels whose centres may be covered: the bounding box of the snapped vertices.
+    const int64_t min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+    const int64_t min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+    const int64_t x0 = std::max<int64_t>(0, floor_div(min_x - kHalf + kSubpixelScale - 1, kSubpixelScale));
+    const int64_t y0 = std::max<int64_t>(0, floor_div(min_y - kHalf + kSubpixelScale - 1, kSubpixelScale));
+    const int64_t x1 = std::min<int64_t>(view.width - 1, floor_div(max_x - kHalf, kSubpixelScale));
+    const int64_t y1 = std::min<int64_t>(view.height - 1, floor_div(max_y - kHalf, kSubpixelScale));
+    if (x0 > x1 || y0 > y1) continue;  // covers no sample centre
+    RasterTri t;
+    t.edge[0] = edge_plane(a, b);
+    t.edge[1] = edge_plane(b, c);
+    t.edge[2] = edge_plane(c, a);
+    if (x0 == x1 && y0 == y1 && !covers(t.edge, int(x0), int(y0))) continue;  // one candidate, missed
+    if (!shared.ready) {
+      shared.ready = true;
+      shared.depth = view.depth_plane(p0, n);
+      const PixelPlane& d = shared.depth;
+      const double span = std::abs(d.c) + std::abs(d.a) * double(view.width) + std::abs(d.b) * double(view.height);
+      shared.depth_max = vertex_depth_max + std::abs(d.a) + std::abs(d.b) + 1e-9 * (span + std::abs(vertex_depth_max));
+      if (in.mask) {
+        AlphaAttrib at;
+        view.barycentric_planes(p0, p1, p2, at.n1, at.n2, at.den);
+        at.uv0 = *in.uv[0];
+        at.uv1 = *in.uv[1];
+        at.uv2 = *in.uv[2];
+        at.mask = in.mask;
+        shared.alpha = uint32_t(alphas.size());
+        alphas.push_back(at);
+      }
+    }
+    t.depth = shared.depth;
+    t.depth_max = shared.depth_max;
+    t.x0 = int32_t(x0);
+    t.y0 = int32_t(y0);
+    t.x1 = int32_t(x1);
+    t.y1 = int32_t(y1);
+    t.key = in.key;
+    t.alpha = shared.alpha;
+    tris.push_back(t);
+    ++emitted;
+  }
+  counters.emitted += uint64_t(emitted);
+  return emitted;
+}
+
+}  // namespace silva::render

@@ -1,0 +1,66 @@
+#pragma once
+/// @file How a view maps world space to pixels: the perspective camera or the orthographic sun.
+#include <Eigen/Core>
+
+#include "core/camera.hpp"
+#include "core/types.hpp"
+
+namespace silva::render {
+
+using Vec2d = Eigen::Vector2d;  ///< 2D double vector.
+using Vec4d = Eigen::Vector4d;  ///< Plane (a, b, c, d): a*x + b*y + c*z + d >= 0 is inside.
+
+/// An affine function of pixel-index coordinates: value(x, y) = (c + b*y) + a*x.
+struct PixelPlane {
+  double c = 0;  ///< Value at pixel (0, 0)'s centre.
+  double a = 0;  ///< Change per pixel to the right.
+  double b = 0;  ///< Change per pixel down.
+  /// Value at pixel (x, y)'s centre, evaluated in the rasteriser's fixed order.
+  double at(double x, double y) const { return (c + b * y) + a * x; }
+};
+
+/// A view: world -> view transform plus a perspective or orthographic projection (see
+/// raster_conventions.hpp for axes and depth).
+struct ViewProjection {
+  bool perspective = true;   ///< false: orthographic.
+  int width = 0;             ///< Pixels across.
+  int height = 0;            ///< Pixels down.
+  Mat4d world_to_view = Mat4d::Identity();  ///< World -> view space (rigid).
+  double fx = 1, fy = 1;     ///< Perspective: focal lengths; orthographic: pixels per metre.
+  double cx = 0, cy = 0;     ///< u = fx*x/z + cx (perspective) or u = fx*x + cx (orthographic).
+  double near = 0.05;        ///< Perspective near plane (view z).
+  double far = 150.0;        ///< Perspective far plane (view z).
+
+  /// The perspective view of a camera.
+  static ViewProjection from_camera(const Camera& camera);
+  /// An orthographic view: texel (x, y) covers view x in [origin_x + x*texel, +texel), same for y.
+  static ViewProjection orthographic(const Mat4d& world_to_view, double origin_x, double origin_y,
+                                     double texel_size, int width, int height);
+
+  /// Continuous screen position (u, v) of a view-space point (perspective needs z > 0).
+  Vec2d project(const Vec3d& p) const;
+  /// Reverse depth value d of a view-space point (1/z or -z).
+  double depth_value(const Vec3d& p) const { return perspective ? 1.0 / p.z() : -p.z(); }
+  /// Depth value every pixel starts with; samples must beat it (1/far, or -inf).
+  double depth_clear() const;
+  /// Sign test of raster_conventions.hpp: negative for a front face seen from this view.
+  double facing(const Vec3d& p0, const Vec3d& n) const { return perspective ? p0.dot(n) : n.z(); }
+  /// Planes of the visible volume (image sides, plus near and far for perspective); returns count.
+  int frustum_planes(Vec4d out[6]) const;
+  /// Planes a drawn triangle is clipped against (near plane, guard band); returns count.
+  int clip_planes(Vec4d out[5]) const;
+  /// Plane of the reverse depth d over pixels for the triangle's plane (p0 on it, normal n).
+  PixelPlane depth_plane(const Vec3d& p0, const Vec3d& n) const;
+  /// Homogeneous barycentrics: b1 = n1/den, b2 = n2/den at each pixel centre (exact planes).
+  void barycentric_planes(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, PixelPlane& n1,
+                          PixelPlane& n2, PixelPlane& den) const;
+  /// Projected diameter of a world sphere of radius r at distance `distance`, as a fraction of
+  /// the image height (LOD selection).
+  double screen_size(double radius, double distance) const;
+
+ private:
+  /// Plane for "u >= limit" (axis 0) or "v >= limit" (axis 1), or "<=" when upper is true.
+  Vec4d bound_plane(int axis, double limit, bool upper) const;
+};
+
+}  // namespace silva::render

@@ -1,0 +1,75 @@
+#include "systems/world_generator.hpp"
+
+#include <chrono>
+#include <map>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/instance_id.hpp"
+
+namespace silva::world {
+
+namespace {
+
+/// Seconds elapsed since t0.
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
+  uint32_t index = 0;
+  for (Vegetation& v : objects) {
+    if (!role_has_instances(v.role)) continue;
+    if (index >= kMaxObjectsPerChunk)
+      throw InputError("chunk (" + std::to_string(coord.i) + ", " + std::to_string(coord.j) + ") holds more than " +
+                       std::to_string(kMaxObjectsPerChunk) + " objects: lower vegetation.density");
+    v.instance_id = pack_instance_id(coord, index++);
+  }
+}
+
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                            const CandidateLookup& neighbours) {
+  ChunkContent out;
+  out.coord = coord;
+  auto t0 = std::chrono::steady_clock::now();
+  out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
+  out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
+  out.stats.generate_s = since(t0);
+  t0 = std::chrono::steady_clock::now();
+  ResolveStats rs;
+  out.objects = resolve_chunk(ctx, coord, own, neighbours, rs);
+  assign_instance_ids(coord, out.objects);
+  out.stats.resolve_s = since(t0);
+  auto& st = out.stats;
+  for (const Vegetation& v : out.objects) ++st.objects_by_role[size_t(v.role)];
+  st.candidates = uint32_t(own.solids.size() + own.ground.size());
+  st.trail_rejected = own.trail_rejected;
+  st.adjusted = rs.adjusted;
+  st.dropped = rs.dropped;
+  st.ground_dropped = rs.ground_dropped;
+  st.broad_queries = rs.broad_queries;
+  st.narrow_queries = rs.narrow_queries;
+  st.triangles = out.terrain.triangle_count() + out.trail.triangle_count();
+  return out;
+}
+
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ChunkCandidates own = place_candidates(ctx, coord, true);
+  std::map<ChunkCoord, ChunkCandidates> around;
+  const int ring = ctx.neighbour_ring;
+  for (int dj = -ring; dj <= ring; ++dj)
+    for (int di = -ring; di <= ring; ++di)
+      if (di != 0 || dj != 0) {
+        const ChunkCoord n{coord.i + di, coord.j + dj};
+        around.emplace(n, place_candidates(ctx, n, false));
+      }
+  const double place_s = since(t0);
+  ChunkContent out = generate_chunk(ctx, coord, own, [&](ChunkCoord c) -> const ChunkCandidates& { return around.at(c); });
+  out.stats.place_s = place_s;
+  return out;
+}
+
+}  // namespace silva::world

@@ -1,0 +1,22 @@
+#pragma once
+/// @file The chunk generation façade: terrain + trail piece + placement + resolve of one chunk.
+#include "components/chunk.hpp"
+#include "systems/placement.hpp"
+#include "systems/resolve.hpp"
+#include "systems/world_context.hpp"
+
+namespace silva::world {
+
+/// Generates chunk `coord` completely (its neighbours' candidates are recomputed as needed).
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
+
+/// Generates chunk `coord` with candidates looked up (e.g. precomputed for a whole region);
+/// `own` must be place_candidates(ctx, coord, true). Same result as generate_chunk.
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                            const CandidateLookup& neighbours);
+
+/// Assigns packed instance ids to the things (roles with instances) in list order; stuff gets 0.
+/// Throws InputError when a chunk holds more than kMaxObjectsPerChunk things.
+void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects);
+
+}  // namespace silva::world

@@ -1,0 +1,162 @@
+// The generic factory test (Infinigen habit): every built-in factory, several seeds and variants.
+#include "assets/factory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <set>
+
+#include "mesh_checks.hpp"
+
+namespace silva::assets {
+namespace {
+
+/// Plausible real-world size of each kind: height range (m) of the full-detail bounds.
+struct SizeRange {
+  float min_height, max_height, max_width;
+};
+SizeRange expected_size(AssetKind k) {
+  switch (k) {
+    case AssetKind::ConiferTree: return {12.0f, 25.5f, 12.0f};
+    case AssetKind::BroadleafTree: return {10.0f, 20.0f, 16.0f};
+    case AssetKind::DeadTree: return {4.0f, 15.5f, 12.0f};
+    case AssetKind::Stump: return {0.3f, 0.9f, 1.2f};
+    case AssetKind::Grass: return {0.25f, 0.6f, 0.6f};
+    case AssetKind::Fern: return {0.4f, 1.0f, 2.2f};
+    case AssetKind::Shrub: return {0.8f, 2.0f, 2.6f};
+    case AssetKind::Rock: return {0.05f, 1.5f, 1.5f};
+    case AssetKind::Log: return {0.2f, 0.7f, 6.0f};
+    default: return {0, 0, 0};
+  }
+}
+
+/// Roles a kind's parts may have.
+std::set<Role> allowed_roles(AssetKind k) {
+  switch (k) {
+    case AssetKind::ConiferTree:
+    case AssetKind::BroadleafTree: return {Role::TreeTrunk, Role::TreeCanopy};
+    case AssetKind::DeadTree: return {Role::DeadTree};
+    case AssetKind::Stump: return {Role::Stump};
+    case AssetKind::Grass:
+    case AssetKind::Fern: return {Role::GroundVegetation};
+    case AssetKind::Shrub: return {Role::Shrub};
+    default: return {Role::Obstacle};
+  }
+}
+
+CollisionProxy::Shape expected_proxy(AssetKind k) {
+  switch (k) {
+    case AssetKind::Grass:
+    case AssetKind::Fern: return CollisionProxy::Shape::None;
+    case AssetKind::Log: return CollisionProxy::Shape::Capsule;
+    case AssetKind::Rock: return CollisionProxy::Shape::Box;  // or Sphere, checked below
+    default: return CollisionProxy::Shape::Cylinder;
+  }
+}
+
+bool same_bytes(const Mesh& a, const Mesh& b) {
+  return a.positions.size() == b.positions.size() && a.indices == b.indices &&
+         std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(Vec3f)) == 0 &&
+         std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(Vec3f)) == 0 &&
+         std::memcmp(a.uvs.data(), b.uvs.data(), a.uvs.size() * sizeof(Vec2f)) == 0;
+}
+
+void check_asset(const Factory& f, const Asset& a) {
+  SCOPED_TRACE(a.name);
+  ASSERT_GE(a.lods.size(), 3u);
+  ASSERT_EQ(a.lod_screen_sizes.size(), a.lods.size() - 1);
+  for (size_t k = 0; k < a.lods.size(); ++k) {
+    test::expect_valid_mesh(a.lods[k], "lod" + std::to_string(k));
+    ASSERT_EQ(a.lods[k].parts.size(), a.lods[0].parts.size());
+    for (size_t p = 0; p < a.lods[k].parts.size(); ++p) EXPECT_EQ(a.lods[k].parts[p].role, a.lods[0].parts[p].role);
+    if (k > 0) {
+      EXPECT_LT(a.lods[k].triangle_count(), a.lods[k - 1].triangle_count());
+      EXPECT_GT(a.lod_screen_sizes[k - 1], 0.0f);
+      if (k > 1) EXPECT_LT(a.lod_screen_sizes[k - 1], a.lod_screen_sizes[k - 2]);
+    }
+  }
+  const Mesh& m = a.lods[0];
+  EXPECT_LE(m.triangle_count(), f.kind == AssetKind::Grass ? 50u : 6000u);
+  const std::set<Role> roles = allowed_roles(f.kind);
+  for (const MeshPart& p : m.parts) EXPECT_TRUE(roles.count(p.role)) << role_name(p.role);
+  EXPECT_TRUE(roles.count(a.role));
+  // Sizes: height of the bounds above ground, horizontal extent, origin at the ground contact.
+  const AABB box = m.bounds();
+  const SizeRange size = expected_size(f.kind);
+  EXPECT_GE(box.max.z(), size.min_height);
+  EXPECT_LE(box.max.z(), size.max_height);
+  EXPECT_LE(std::max(box.size().x(), box.size().y()), size.max_width);
+  EXPECT_LE(box.min.z(), 0.01f);
+  EXPECT_GE(box.min.z(), -0.25f * box.size().z());
+  // Counter-clockwise fronts: each triangle's face normal agrees with its vertex normals.
+  size_t disagree = 0, faces = 0;
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const Vec3f &p0 = m.positions[m.indices[t]], &p1 = m.positions[m.indices[t + 1]], &p2 = m.positions[m.indices[t + 2]];
+    const Vec3f n = (p1 - p0).cross(p2 - p0);
+    if (n.norm() < 1e-9f) continue;
+    ++faces;
+    const Vec3f vn = m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] + m.normals[m.indices[t + 2]];
+    disagree += n.dot(vn) <= 0;
+  }
+  EXPECT_EQ(disagree, 0u) << "of " << faces;
+  // Collision proxy.
+  if (f.kind == AssetKind::Rock)
+    EXPECT_TRUE(a.proxy.shape == CollisionProxy::Shape::Box || a.proxy.shape == CollisionProxy::Shape::Sphere);
+  else
+    EXPECT_EQ(a.proxy.shape, expected_proxy(f.kind));
+  if (f.kind == AssetKind::ConiferTree || f.kind == AssetKind::BroadleafTree || f.kind == AssetKind::DeadTree) {
+    EXPECT_GE(2 * a.proxy.radius, 0.3f);
+    EXPECT_LE(2 * a.proxy.radius, 0.8f);
+  }
+  if (f.kind == AssetKind::Log) {
+    const float length = a.proxy.height + 2 * a.proxy.radius;
+    EXPECT_GE(length, 3.0f);
+    EXPECT_LE(length, 6.5f);
+  }
+  if (a.proxy.shape != CollisionProxy::Shape::None) {
+    EXPECT_GT(a.proxy.footprint_radius(), 0.0f);
+    EXPECT_LE(a.proxy.footprint_radius(), 0.6f * std::max(box.size().x(), box.size().y()));
+  }
+}
+
+TEST(Factory, OneFactoryPerKindWithSeveralVariants) {
+  std::set<AssetKind> kinds;
+  for (const Factory& f : factories()) {
+    kinds.insert(f.kind);
+    EXPECT_GE(f.variants, 4u) << f.prefix;
+  }
+  EXPECT_EQ(kinds.size(), size_t(AssetKind::Count));
+}
+
+TEST(Factory, EveryFactoryMakesValidAssetsForSeveralSeeds) {
+  for (const Factory& f : factories())
+    for (uint64_t seed : {uint64_t(1), uint64_t(77), kDefaultAssetSeed})
+      for (uint32_t v = 0; v < 3; ++v) check_asset(f, make_asset(f, seed, v));
+}
+
+TEST(Factory, SameSeedSameBytesDifferentSeedDifferentMesh) {
+  for (const Factory& f : factories()) {
+    SCOPED_TRACE(f.prefix);
+    const Asset a = make_asset(f, 5, 1), b = make_asset(f, 5, 1);
+    ASSERT_EQ(a.lods.size(), b.lods.size());
+    for (size_t k = 0; k < a.lods.size(); ++k) EXPECT_TRUE(same_bytes(a.lods[k], b.lods[k]));
+    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 6, 1).lods[0]));
+    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 5, 2).lods[0]));
+  }
+}
+
+TEST(Factory, GenerateLibraryIndexesKindsAndNamesAreUnique) {
+  const AssetLibrary lib = generate_library(3);
+  std::set<std::string> names;
+  size_t total = 0;
+  for (const Factory& f : factories()) total += f.variants;
+  ASSERT_EQ(lib.assets.size(), total);
+  for (const Asset& a : lib.assets) EXPECT_TRUE(names.insert(a.name).second) << a.name;
+  for (size_t k = 0; k < size_t(AssetKind::Count); ++k)
+    for (uint32_t i : lib.by_kind[k]) EXPECT_EQ(size_t(lib.assets[i].kind), k);
+  EXPECT_EQ(lib.assets[0].name, "conifer_00");
+  EXPECT_EQ(lib.assets[0].file, "conifer_00.glb");
+}
+
+}  // namespace
+}  // namespace silva::assets
