@@ -14,10 +14,6 @@ namespace {
 
 }  // namespace
 
-int run_generate(const GenerateRequest&, const Reporter&) { not_implemented("generate"); }
-int run_world(const WorldRequest&, const Reporter&) { not_implemented("world"); }
-int run_assets_build(const AssetsBuildRequest&, const Reporter&) { not_implemented("assets build"); }
-int run_merge(const MergeRequest&, const Reporter&) { not_implemented("merge"); }
 int run_bench(const BenchRequest&, const Reporter&) { not_implemented("bench"); }
 int run_profile_placement(const ProfilePlacementRequest&, const Reporter&) {
   not_implemented("profile placement");

@@ -10,7 +10,7 @@
 #include "app/config_checks.hpp"
 #include "app/config_schema.hpp"
 #include "app/config_value.hpp"
-#include "app/lighting_presets_hook.hpp"
+#include "app/lighting_config.hpp"
 #include "core/error.hpp"
 
 namespace silva::app {
@@ -56,7 +56,7 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
                          describe_node(node));
       }
       loaded.lighting_presets = *node.as_table();
-      check_lighting_presets(loaded.lighting_presets, loaded.source);
+      parse_preset_tables(loaded.lighting_presets, loaded.source);  // checks every field
     } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {
@@ -161,9 +161,9 @@ void apply_seed_flag(LoadedConfig& loaded, std::string_view text) {
 }
 
 std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded) {
-  std::vector<std::string> names(builtin_lighting_presets().begin(), builtin_lighting_presets().end());
-  for (const auto& [name, preset] : loaded.lighting_presets) {
-    if (std::find(names.begin(), names.end(), name.str()) == names.end()) names.emplace_back(name.str());
+  std::vector<std::string> names;
+  for (const auto& [name, preset] : parse_preset_tables(loaded.lighting_presets, loaded.source)) {
+    names.push_back(name);
   }
   return names;
 }

@@ -17,7 +17,8 @@ struct LoadedConfig {
   bool seed_given = false;       ///< True when the seed came from the file, --set or --seed.
   bool seed_from_clock = false;  ///< True when resolve_seed drew the seed from the clock.
   std::string source;            ///< The config file as given, "" for the built-in defaults.
-  toml::table lighting_presets;  ///< The config's [lighting.presets.<name>] tables, as written.
+  toml::table lighting_presets;  ///< The config's [lighting.presets.<name>] tables, as written
+                                 ///< (already checked by parse_preset_tables).
 };
 
 /// Where the keys come from; later sources win.
@@ -46,7 +47,8 @@ void apply_override(LoadedConfig& loaded, std::string_view assignment);
 /// Applies `--seed N` (same checks as the seed key). Throws InputError.
 void apply_seed_flag(LoadedConfig& loaded, std::string_view text);
 
-/// Names of the lighting presets a config can select: built-in ones, then its own.
+/// Names of the lighting presets a config can select (built-in and its own), sorted. The presets
+/// themselves: app/lighting_config.hpp parse_preset_tables(loaded.lighting_presets, loaded.source).
 std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded);
 
 /// Draws the seed from the clock (0 … 9 999 999 999) when none was given; marks seed_from_clock.

@@ -198,9 +198,4 @@ bool is_section(std::string_view name) {
                      [&](const ConfigKey& key) { return !name.empty() && key.section() == name; });
 }
 
-const std::vector<std::string_view>& builtin_lighting_presets() {
-  static const std::vector<std::string_view> names = {"day", "dusk", "night"};
-  return names;
-}
-
 }  // namespace silva::app

@@ -67,7 +67,4 @@ std::string_view closest_key(std::string_view name);
 /// True when `name` is a section of the schema ("camera", "output", ...).
 bool is_section(std::string_view name);
 
-/// The built-in lighting preset names (configs/lighting.toml): day, dusk, night.
-const std::vector<std::string_view>& builtin_lighting_presets();
-
 }  // namespace silva::app

@@ -40,7 +40,7 @@ GeneratedAsset generate_broadleaf(Rng& rng) {
   for (const Vec3f& c : blob_centers) {
     const float rb = blob * rng.range(0.85f, 1.1f);
     const Vec3f radii(rb, rb, std::min(0.7f * rb, 0.98f * height - c.z()));
-    add_card_blob(b, rng, c, radii, 34, rng.range(0.45f, 0.6f));
+    add_card_blob(b, rng, c, radii, 64, rb * rng.range(0.22f, 0.28f));
   }
   return {b.finish(), Role::TreeTrunk, cylinder_proxy(r0, height)};
 }

@@ -8,7 +8,7 @@ GeneratedAsset generate_log(Rng& rng) {
   const float length = rng.range(3.0f, 6.0f);
   const float r = rng.range(0.15f, 0.3f);
   const float axis_z = 0.85f * r;  // resting slightly sunk into the ground
-  const float bend = rng.range(-0.04f, 0.04f) * length;
+  const float bend = rng.range(-0.015f, 0.015f) * length;
   constexpr int kNodes = 5;
   std::vector<TubeNode> nodes;
   for (int i = 0; i < kNodes; ++i) {

@@ -24,7 +24,7 @@ GeneratedAsset generate_shrub(Rng& rng) {
     add_tube(b, stem, 5);
   }
   b.begin_part(Role::Shrub, Material::ShrubLeaves, shrub_leaves_mask(), true);
-  for (size_t i = 0; i < centers.size(); ++i) add_card_blob(b, rng, centers[i], radii[i], 26, 0.12f * height);
+  for (size_t i = 0; i < centers.size(); ++i) add_card_blob(b, rng, centers[i], radii[i], 36, 0.12f * height);
   return {b.finish(), Role::Shrub, cylinder_proxy(0.6f * reach, height)};
 }
 

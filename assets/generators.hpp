@@ -19,7 +19,7 @@ struct GeneratedAsset {
 GeneratedAsset generate_conifer(Rng& rng);
 /// Broadleaf: 10-20 m, trunk + branches + leaf-card blobs.
 GeneratedAsset generate_broadleaf(Rng& rng);
-/// Dead tree: 6-15 m bare, bent trunk with bare branches (some with twigs), sometimes snapped.
+/// Dead tree: 8-15 m (snapped: 4-12 m), bent trunk with bare branches (some with twigs), sometimes snapped.
 GeneratedAsset generate_dead_tree(Rng& rng);
 /// Stump: 0.3-0.9 m high, flared bark sides and a cut wood top.
 GeneratedAsset generate_stump(Rng& rng);

@@ -7,10 +7,11 @@
 
 namespace silva::assets {
 
-/// Loads every asset listed in `library_json` (schema in assets/manifest.hpp). A file with fewer
-/// levels than thresholds + 1 gets the missing levels built with build_lods; extra thresholds
-/// beyond the levels it can build are dropped. Throws InputError naming the file and key for a
-/// bad manifest or a missing, corrupt or untagged asset.
+/// Loads every asset listed in `library_json` (schema in assets/manifest.hpp). A file holding a
+/// single level gets further levels built with build_lods (one per threshold, at most 3); the
+/// asset keeps min(levels, thresholds + 1) levels and as many thresholds as it has extra levels.
+/// Throws InputError naming the file and key for a bad manifest or a missing, corrupt or
+/// untagged asset.
 AssetLibrary load_library(const std::filesystem::path& library_json);
 
 }  // namespace silva::assets

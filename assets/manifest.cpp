@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace silva::assets {
 
@@ -173,10 +174,7 @@ void write_manifest(const std::filesystem::path& path, std::span<const ManifestE
                       {"lod_screen_sizes", e.lod_screen_sizes}});
   }
   const std::string text = json{{"format", kFormat}, {"version", kVersion}, {"assets", assets}}.dump(2) + "\n";
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  f << text;
-  f.close();
-  if (!f) throw IoError("cannot write " + path.string());
+  io::write_file_atomic(path, text);
 }
 
 std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path) {

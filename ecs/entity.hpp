@@ -32,7 +32,11 @@ inline constexpr Entity null_entity{};
 /// "#index.vgeneration", or "null", for messages.
 inline std::string to_string(Entity e) {
   if (e.is_null()) return "null";
-  return "#" + std::to_string(e.index) + ".v" + std::to_string(e.generation);
+  std::string s = "#";
+  s += std::to_string(e.index);
+  s += ".v";
+  s += std::to_string(e.generation);
+  return s;
 }
 
 }  // namespace silva::ecs

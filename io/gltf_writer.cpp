@@ -2,12 +2,12 @@
 
 #include <array>
 #include <cstring>
-#include <fstream>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace silva::io {
 
@@ -310,19 +310,7 @@ std::vector<uint8_t> encode_glb(const GltfDocument& doc) {
 }
 
 void write_glb(const GltfDocument& doc, const std::filesystem::path& path) {
-  const std::vector<uint8_t> bytes = encode_glb(doc);
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw IoError("cannot write " + tmp.string());
-    f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    f.close();
-    if (!f) throw IoError("cannot write " + tmp.string() + " (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw IoError("cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message());
+  write_file_atomic(path, std::span<const uint8_t>(encode_glb(doc)));
 }
 
 }  // namespace silva::io

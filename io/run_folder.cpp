@@ -95,7 +95,7 @@ fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std:
     } else if (mode == FolderMode::Fresh) {
       throw InputError(run_dir.string() + " already holds this run; use --resume to continue it or "
                        "--overwrite to start again");
-    } else {
+    } else if (mode == FolderMode::Resume) {
       remove_temp_files(run_dir);
     }
   }

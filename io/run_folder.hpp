@@ -8,7 +8,9 @@
 namespace silva::io {
 
 /// What the command line allows to happen to an existing run folder.
-enum class FolderMode { Fresh, Resume, Overwrite };
+/// Shard: like Resume, and a fresh folder is fine too, but leftover temp files stay (other
+/// shards may be writing them right now; `silva merge` removes them).
+enum class FolderMode { Fresh, Resume, Overwrite, Shard };
 
 /// Formats a seed the way folder names and logs show it: %010d.
 std::string seed_folder_name(int64_t seed);

@@ -28,6 +28,21 @@ struct GBuffer {
 };
 
 /// An orthographic sun depth map: light-space depth of the nearest occluder per texel.
+///
+/// Convention (render/shadow_pass.hpp builds it, render::Renderer fills it):
+///   - Light space is right-handed and metric: p_light = world_to_light * p_world, a pure
+///     rotation (no translation, no scale). Its +z axis points AWAY from the sun (the direction
+///     sunlight travels), so larger z is farther from the sun; x = normalize(h x z) and
+///     y = z x x, with h = world +Z (world +X when the sun is within ~8 degrees of the zenith
+///     or nadir).
+///   - Texel (x, y) (x < width, y < height) covers light-space x in
+///     [origin_x + x*texel_size, origin_x + (x+1)*texel_size) and y in
+///     [origin_y + y*texel_size, origin_y + (y+1)*texel_size); its sample is the centre.
+///     depth[y*width + x] is that texel. The texels cover the light-space footprint of the
+///     region the map was built for (square texels; width == height).
+///   - depth = light-space z of the nearest surface (any facing) along +z through the texel
+///     centre; +inf where no surface is hit. A world point p is lit when
+///     (world_to_light * p).z <= depth at its texel (plus a bias of the shader's choice).
 struct ShadowMap {
   int width = 0;                  ///< Texels across.
   int height = 0;                 ///< Texels down.

@@ -13,6 +13,15 @@ struct MeshLods {
   /// LOD k (k >= 1) is used when the instance's projected bounding-sphere diameter, as a
   /// fraction of image height, is below lod_screen_sizes[k-1]. Size lods.size()-1, descending.
   std::vector<float> lod_screen_sizes;
+  /// Object-space bounds of all LODs, used for culling and LOD selection. Left empty, the
+  /// renderer computes them every pass; call compute_bounds() once to cache them here.
+  AABB bounds;
+  /// Fills `bounds` from the positions of every LOD.
+  void compute_bounds() {
+    bounds = AABB{};
+    for (const Mesh* m : lods)
+      if (m) bounds.extend(m->bounds());
+  }
 };
 
 /// One placed copy of a mesh.

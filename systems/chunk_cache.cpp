@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
 #include "systems/world_generator.hpp"
 
 namespace silva::world {

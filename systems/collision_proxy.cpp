@@ -1,5 +1,9 @@
 #include "systems/collision_proxy.hpp"
 
+// FCL's header-only narrow-phase templates, instantiated here for float, trip GCC 12's
+// -Wmaybe-uninitialized inside /usr/include/fcl; the warning is not about this file's code.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>

@@ -72,7 +72,9 @@ void check_asset(const Factory& f, const Asset& a) {
     if (k > 0) {
       EXPECT_LT(a.lods[k].triangle_count(), a.lods[k - 1].triangle_count());
       EXPECT_GT(a.lod_screen_sizes[k - 1], 0.0f);
-      if (k > 1) EXPECT_LT(a.lod_screen_sizes[k - 1], a.lod_screen_sizes[k - 2]);
+      if (k > 1) {
+        EXPECT_LT(a.lod_screen_sizes[k - 1], a.lod_screen_sizes[k - 2]);
+      }
     }
   }
   const Mesh& m = a.lods[0];
@@ -100,10 +102,11 @@ void check_asset(const Factory& f, const Asset& a) {
   }
   EXPECT_EQ(disagree, 0u) << "of " << faces;
   // Collision proxy.
-  if (f.kind == AssetKind::Rock)
+  if (f.kind == AssetKind::Rock) {
     EXPECT_TRUE(a.proxy.shape == CollisionProxy::Shape::Box || a.proxy.shape == CollisionProxy::Shape::Sphere);
-  else
+  } else {
     EXPECT_EQ(a.proxy.shape, expected_proxy(f.kind));
+  }
   if (f.kind == AssetKind::ConiferTree || f.kind == AssetKind::BroadleafTree || f.kind == AssetKind::DeadTree) {
     EXPECT_GE(2 * a.proxy.radius, 0.3f);
     EXPECT_LE(2 * a.proxy.radius, 0.8f);
@@ -115,7 +118,7 @@ void check_asset(const Factory& f, const Asset& a) {
   }
   if (a.proxy.shape != CollisionProxy::Shape::None) {
     EXPECT_GT(a.proxy.footprint_radius(), 0.0f);
-    EXPECT_LE(a.proxy.footprint_radius(), 0.6f * std::max(box.size().x(), box.size().y()));
+    EXPECT_LE(a.proxy.footprint_radius(), 0.75f * std::max(box.size().x(), box.size().y()));  // box: half diagonal
   }
 }
 

@@ -38,10 +38,12 @@ class ManifestTest : public ::testing::Test {
   fs::path dir_;
 };
 
-const char* kGood = R"({"format": "silva-asset-library", "version": 1, "assets": [
-  {"name": "r", "file": "r.obj", "kind": "rock", "class": "obstacle", "parts": {"stone": "obstacle"},
+const char* kEntry = R"({"name": "r", "file": "r.obj", "kind": "rock", "class": "obstacle",
+   "parts": {"stone": "obstacle"},
    "collision": {"shape": "box", "center": [0, 0, 0.2], "half_extents": [0.3, 0.2, 0.2]},
-   "lod_screen_sizes": [0.2, 0.05]}]})";
+   "lod_screen_sizes": [0.2, 0.05]})";
+const std::string kHeader = R"({"format": "silva-asset-library", "version": 1, "assets": [)";
+const std::string kGood = kHeader + kEntry + "]}";
 
 std::string with(const std::string& from, const std::string& to) {
   std::string s = kGood;
@@ -97,9 +99,8 @@ TEST_F(ManifestTest, BadManifestsNameTheFileAndKey) {
                "assets[0].collision.half_extents");
   expect_error(with("[0.2, 0.05]", "[0.05, 0.2]"), "assets[0].lod_screen_sizes");
   expect_error(with(R"("file": "r.obj", )", ""), "assets[0].file");
-  expect_error(with(R"("parts": {"stone": "obstacle"}, )", ""), "assets[0].parts");
-  const std::string dup = std::string(kGood).insert(std::string(kGood).rfind(']'), std::string(",") +
-      std::string(kGood).substr(std::string(kGood).find("{\"name\""), std::string(kGood).rfind(']') - std::string(kGood).find("{\"name\"")));
+  expect_error(with(R"("parts": {"stone": "obstacle"},)", ""), "assets[0].parts");
+  const std::string dup = kHeader + kEntry + "," + kEntry + "]}";
   expect_error(dup, "assets[1].name");
 }
 

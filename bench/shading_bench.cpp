@@ -1,0 +1,121 @@
+// Shading benchmarks: shade_rgb at 1920x1080 on a synthetic G-buffer (ground plane, trunk
+// columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and grain parts.
+#include <benchmark/benchmark.h>
+
+#include <limits>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "render/post.hpp"
+#include "render/shade.hpp"
+#include "render/shade_ao.hpp"
+
+namespace {
+
+using namespace silva;
+using namespace silva::render;
+
+constexpr int kWidth = 1920, kHeight = 1080;
+
+/// Camera 1.5 m above the origin looking along +X, 5 degrees down.
+Camera bench_camera() {
+  Camera cam = Camera::from_fov(kWidth, kHeight, 90, 0.05, 150);
+  cam.camera_to_world = pose_from_angles(Vec3d(0, 0, 1.5), 0, -5, 0);
+  return cam;
+}
+
+/// Ground plane z = 0 (ground/trail materials) with vertical trunk columns every 97 px and a
+/// foliage band across the upper third; the rest is sky.
+GBuffer bench_gbuffer(const Camera& cam) {
+  GBuffer g;
+  g.resize(cam.width, cam.height);
+  const Vec3d o = cam.position();
+  for (int v = 0; v < cam.height; ++v) {
+    for (int u = 0; u < cam.width; ++u) {
+      const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
+      const Vec3d d = cam.ray_direction(u, v);
+      const bool trunk = u % 97 < 9, canopy = v < cam.height / 3 && (u / 61 + v / 47) % 3 != 0;
+      if (!trunk && !canopy && d.z() >= 0) continue;
+      const double t = trunk ? 8.0 + (u / 97) % 5 : canopy ? 12.0 : -o.z() / d.z();
+      if (t >= cam.far) continue;
+      const Vec3d p = o + t * d;
+      g.depth[i] = float(t);
+      g.position[i] = p.cast<float>();
+      g.normal[i] = trunk || canopy ? Vec3f(-1, 0, 0) : Vec3f(0, 0, 1);
+      g.material[i] = trunk    ? Material::BarkConifer
+                      : canopy ? Material::Needles
+                      : std::abs(p.y()) < 0.75 ? Material::Trail
+                                               : Material::Ground;
+      g.uv[i] = Vec2f(float((p.y() + 0.75) / 1.5), float(p.x()));
+      g.variation[i] = uint32_t(u / 97);
+    }
+  }
+  return g;
+}
+
+/// 2048^2 shadow map straight down over 200 m, all ground at depth 0 (every lookup does PCF).
+ShadowMap bench_shadow() {
+  ShadowMap map;
+  map.width = map.height = 2048;
+  map.texel_size = 200.0 / 2048;
+  map.origin_x = map.origin_y = -100;
+  map.world_to_light << 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1;
+  map.depth.assign(size_t(2048) * 2048, 0.0f);
+  return map;
+}
+
+/// Fixture data shared by the benchmarks (built once).
+struct Scene {
+  Camera camera = bench_camera();
+  GBuffer gbuffer = bench_gbuffer(camera);
+  ShadowMap shadow = bench_shadow();
+};
+
+const Scene& scene() {
+  static const Scene s;
+  return s;
+}
+
+void BM_ShadeRgb(benchmark::State& state) {
+  const Scene& s = scene();
+  LightingPreset preset = preset_day();
+  preset.sun_elevation_deg = 70;
+  std::vector<uint8_t> rgb;
+  tbb::task_arena arena(int(state.range(0)));
+  for (auto _ : state) {
+    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, 0.015f}, rgb); });
+    benchmark::DoNotOptimize(rgb.data());
+  }
+  state.counters["threads"] = double(state.range(0));
+  state.counters["pixels"] = double(s.gbuffer.size());
+  state.counters["Mpixels/s"] =
+      benchmark::Counter(double(s.gbuffer.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_ShadeRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+void BM_ScreenSpaceAo(benchmark::State& state) {
+  const Scene& s = scene();
+  for (auto _ : state) {
+    float sum = 0;
+    for (int v = 0; v < kHeight; ++v)
+      for (int u = 0; u < kWidth; ++u)
+        if (s.gbuffer.depth[size_t(v) * kWidth + size_t(u)] > 0) sum += screen_space_ao(s.gbuffer, s.camera, u, v);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["pixels"] = double(s.gbuffer.size());
+}
+BENCHMARK(BM_ScreenSpaceAo)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_FilmGrain(benchmark::State& state) {
+  const uint64_t key = grain_key("random", 0);
+  for (auto _ : state) {
+    Vec3f sum = Vec3f::Zero();
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) sum += film_grain(1, key, i, 0.015f);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["pixels"] = double(kWidth) * kHeight;
+}
+BENCHMARK(BM_FilmGrain)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace

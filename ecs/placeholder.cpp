@@ -1,1 +1,0 @@
-// Placeholder so the ecs library has a source until its first real file lands; delete when one exists.

@@ -1,0 +1,96 @@
+#include "render/geometry_pass.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "render/instance_cull.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// Object -> view transform of an instance, in double.
+Eigen::Matrix<double, 3, 4> object_to_view(const Instance& inst, const ViewProjection& view) {
+  Mat4d o2w = Mat4d::Identity();
+  o2w.topRows<3>() = inst.object_to_world.cast<double>();
+  return (view.world_to_view * o2w).topRows<3>();
+}
+
+/// Throws InputError unless the mesh's arrays agree with each other.
+void check_mesh(const Mesh& mesh, uint32_t mesh_index) {
+  const size_t n = mesh.positions.size();
+  const auto fail = [&](const std::string& what) {
+    throw InputError("render scene: mesh " + std::to_string(mesh_index) + ": " + what);
+  };
+  if (mesh.indices.size() % 3 != 0) fail("index count is not a multiple of 3");
+  if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail("uv count differs from the position count");
+  if (!mesh.normals.empty() && mesh.normals.size() != n) fail("normal count differs from the position count");
+  for (const MeshPart& p : mesh.parts) {
+    if (p.first_index % 3 != 0 || p.index_count % 3 != 0 || size_t(p.first_index) + p.index_count > mesh.indices.size())
+      fail("a part's index range is not whole triangles inside the index buffer");
+    if (p.mask && mesh.uvs.empty()) fail("an alpha-masked part needs uvs");
+  }
+}
+
+/// Sets up and bins the triangles of one item into `store`.
+void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back, const TileGrid& grid,
+                  GeometryStore& store) {
+  const Instance& inst = scene.instances[item.instance];
+  const Mesh& mesh = *scene.meshes[inst.mesh].lods[item.lod];
+  const Eigen::Matrix<double, 3, 4> m = object_to_view(inst, sv.view);
+  const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
+  const size_t vertex_count = mesh.positions.size();
+  TriangleInput in;
+  for (const MeshPart& part : mesh.parts) {
+    const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
+    const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
+    in.mask = part.mask.get();
+    in.cull_back = cull_back && !part.double_sided;
+    for (uint32_t t = p_begin; t < p_end; ++t) {
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t v = mesh.indices[size_t(t) * 3 + size_t(k)];
+        if (v >= vertex_count)
+          throw InputError("render scene: mesh " + std::to_string(inst.mesh) + " has index " + std::to_string(v) +
+                           " but only " + std::to_string(vertex_count) + " vertices");
+        in.p[k] = m.leftCols<3>() * mesh.positions[v].cast<double>() + m.col(3);
+        if (in.mask) in.uv[k] = &mesh.uvs[v];
+      }
+      in.key = (uint64_t(item.instance) << 32) | t;
+      const size_t first = store.tris.size();
+      if (setup_triangle(sv, in, store.tris, store.alphas, store.counters) > 0) store.bin_from(first, grid);
+    }
+  }
+}
+
+}  // namespace
+
+uint64_t build_draw_items(const Scene& scene, std::span<const uint32_t> instance_lod, std::vector<DrawItem>& items) {
+  items.clear();
+  uint64_t triangles = 0;
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    if (instance_lod[i] == kCulled) continue;
+    const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[instance_lod[i]];
+    const uint32_t n = uint32_t(mesh.triangle_count());
+    triangles += n;
+    for (uint32_t first = 0; first < n; first += kTrianglesPerItem)
+      items.push_back(DrawItem{uint32_t(i), instance_lod[i], first, std::min(kTrianglesPerItem, n - first)});
+  }
+  return triangles;
+}
+
+void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
+                       const TileGrid& grid, GeometryStoreSet& stores) {
+  for (uint32_t i = 0; i < scene.meshes.size(); ++i)
+    for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
+  for (GeometryStore& s : stores) s.reset(grid.count());
+  tbb::parallel_for(size_t(0), items.size(), [&](size_t i) {
+    GeometryStore& store = stores.local();
+    if (store.bins.size() != size_t(grid.count())) store.reset(grid.count());
+    process_item(scene, view, items[i], cull_back, grid, store);
+  });
+}
+
+}  // namespace silva::render

@@ -1,0 +1,85 @@
+#include "render/instance_cull.hpp"
+
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// Picks the LOD for a projected size: the largest k with size < thresholds[k-1].
+uint32_t lod_for_size(const MeshLods& m, double size) {
+  uint32_t k = 0;
+  const size_t levels = std::min(m.lods.size() - 1, m.lod_screen_sizes.size());
+  for (size_t i = 0; i < levels; ++i)
+    if (size < double(m.lod_screen_sizes[i])) k = uint32_t(i + 1);
+  return k;
+}
+
+/// True when the view-space sphere lies entirely outside one of the planes.
+bool outside(const Vec4d* planes, int count, const Vec3d& c, double r) {
+  for (int k = 0; k < count; ++k) {
+    const Vec3d n = planes[k].head<3>();
+    const double len = n.norm();
+    if (len > 0.0 && (n.dot(c) + planes[k].w()) < -r * len) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
+  out.resize(scene.meshes.size());
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    const MeshLods& m = scene.meshes[i];
+    if (m.lods.empty()) throw InputError("render scene: mesh " + std::to_string(i) + " has no LOD (needs lods[0])");
+    for (const Mesh* lod : m.lods)
+      if (!lod) throw InputError("render scene: mesh " + std::to_string(i) + " has a null LOD pointer");
+  }
+  tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t i) {
+    const MeshLods& m = scene.meshes[i];
+    AABB b = m.bounds;
+    if (b.empty())
+      for (const Mesh* lod : m.lods) b.extend(lod->bounds());
+    BoundingSphere s;
+    if (!b.empty()) {
+      s.center = b.center().cast<double>();
+      s.radius = 0.5 * b.size().cast<double>().norm();
+    }
+    out[i] = s;
+  });
+}
+
+void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
+                      bool lod, std::vector<uint32_t>& lod_out) {
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    if (scene.instances[i].mesh >= scene.meshes.size())
+      throw InputError("render scene: instance " + std::to_string(i) + " names mesh " +
+                       std::to_string(scene.instances[i].mesh) + ", but the scene has " +
+                       std::to_string(scene.meshes.size()) + " meshes");
+  Vec4d planes[6];
+  const int count = view.frustum_planes(planes);
+  lod_out.resize(scene.instances.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, scene.instances.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) {
+      const Instance& inst = scene.instances[i];
+      const BoundingSphere& s = spheres[inst.mesh];
+      const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
+      const Vec3d world_center = m.leftCols<3>() * s.center + m.col(3);
+      const double scale = m.leftCols<3>().colwise().norm().maxCoeff();
+      const double r_world = s.radius * scale;
+      const Vec3d c = view.world_to_view.topLeftCorner<3, 3>() * world_center + view.world_to_view.block<3, 1>(0, 3);
+      if (s.radius < 0.0 || !c.allFinite() || outside(planes, count, c, r_world)) {
+        lod_out[i] = kCulled;
+        continue;
+      }
+      lod_out[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, c.norm())) : 0u;
+    }
+  });
+}
+
+}  // namespace silva::render

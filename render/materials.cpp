@@ -1,0 +1,151 @@
+#include "render/materials.hpp"
+
+#include <algorithm>
+
+#include "render/shading_noise.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// Noise salts: one per independent pattern so patterns never repeat each other.
+enum Salt : uint32_t {
+  kGroundPatch = 0x100,
+  kGroundLitter = 0x200,
+  kGroundFine = 0x300,
+  kTrailFine = 0x400,
+  kTrailPebble = 0x500,
+  kBarkStreak = 0x600,
+  kBarkLichen = 0x700,
+  kFoliage = 0x800,
+  kRock = 0x900,
+  kWood = 0xa00,
+};
+
+float smoothstep(float e0, float e1, float x) {
+  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+  return smooth_weight(t);
+}
+
+Vec3f lerp(const Vec3f& a, const Vec3f& b, float t) { return a + (b - a) * t; }
+
+/// Per-instance tint: brightness and a green/yellow shift from the variation seed.
+Vec3f variation_tint(uint32_t variation) {
+  const uint32_t h = lattice_hash(int32_t(variation), 17, 3, kFoliage);
+  const float bright = 0.8f + 0.4f * lattice_value(h);
+  const float yellow = 0.25f * lattice_value(lattice_hash(int32_t(variation), 5, 11, kFoliage));
+  return Vec3f(bright * (1.0f + yellow), bright * (1.0f + 0.4f * yellow), bright * (1.0f - 0.5f * yellow));
+}
+
+/// Forest floor: soil, leaf/needle litter and moss, blended by slope and noise.
+Vec3f ground(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const Vec3f soil(0.1f, 0.075f, 0.05f), litter(0.14f, 0.1f, 0.06f), moss(0.08f, 0.1f, 0.035f);
+  const float flat = smoothstep(0.75f, 0.95f, s.normal.z());
+  const float patch = fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundPatch);
+  const float litter_w = smoothstep(0.35f, 0.6f, fbm2(p.x() * 0.7f, p.y() * 0.7f, 2, kGroundLitter));
+  const float fine = fbm2(p.x() * 5.0f, p.y() * 5.0f, 2, kGroundFine);
+  Vec3f c = lerp(soil, litter, litter_w * flat);
+  c = lerp(c, moss, smoothstep(0.52f, 0.68f, patch) * flat);
+  return c * (0.7f + 0.6f * fine);
+}
+
+/// Packed dirt of the trail, pebbly; its edges (uv.x near 0 or 1) fade into the ground.
+/// Expects the trail mesh to carry uv.x in [0, 1] across its width (systems/trail.cpp does);
+/// a uv.x outside (0, 1) is taken as "no across-coordinate" and gets no edge blend.
+Vec3f trail(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const Vec3f dirt(0.2f, 0.16f, 0.11f), pebble(0.3f, 0.28f, 0.25f);
+  const float fine = fbm2(p.x() * 3.0f, p.y() * 3.0f, 3, kTrailFine);
+  Vec3f c = dirt * (0.8f + 0.4f * fine);
+  c = lerp(c, pebble, smoothstep(0.85f, 0.92f, value_noise2(p.x() * 30.0f, p.y() * 30.0f, kTrailPebble)));
+  const float u = s.uv.x();
+  if (u > 0.0f && u < 1.0f) {
+    const float edge = std::min(u, 1.0f - u);
+    const float ragged = 0.08f * value_noise2(p.x() * 2.0f, p.y() * 2.0f, kTrailPebble + 1);
+    c = lerp(ground(s), c, smoothstep(0.02f, 0.22f, edge + ragged));
+  }
+  return c;
+}
+
+/// Bark: base colour with vertical streaks (noise stretched along world z) and optional lichen.
+Vec3f bark(const SurfacePoint& s, const Vec3f& base, float streak_depth, float lichen) {
+  const Vec3f& p = s.position;
+  const float streak = fbm3(p.x() * 9.0f, p.y() * 9.0f, p.z() * 0.7f, 3, kBarkStreak);
+  const float grain = value_noise3(p.x() * 30.0f, p.y() * 30.0f, p.z() * 4.0f, kBarkStreak + 7);
+  Vec3f c = base * (1.0f - streak_depth + 2.0f * streak_depth * streak) * (0.85f + 0.3f * grain);
+  if (lichen > 0.0f) {
+    const float l = smoothstep(0.6f, 0.75f, fbm3(p.x() * 2.0f, p.y() * 2.0f, p.z() * 2.0f, 2, kBarkLichen));
+    c = lerp(c, Vec3f(0.22f, 0.26f, 0.16f), l * lichen);
+  }
+  return c;
+}
+
+/// Foliage: base green, per-instance tint, small per-point mottling.
+Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
+  const Vec3f& p = s.position;
+  const float mottle = value_noise3(p.x() * 6.0f, p.y() * 6.0f, p.z() * 6.0f, kFoliage + 1);
+  return base.cwiseProduct(variation_tint(s.variation)) * (0.8f + 0.4f * mottle);
+}
+
+/// Grass: green with yellowed patches across the ground, lighter towards the blade tip (uv.y).
+Vec3f grass(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float dry = smoothstep(0.5f, 0.75f, fbm2(p.x() * 0.3f, p.y() * 0.3f, 2, kFoliage + 2));
+  const Vec3f base = lerp(Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f), dry);
+  const float tip = std::clamp(s.uv.y(), 0.0f, 1.0f);
+  return foliage(s, base) * (0.75f + 0.4f * tip);
+}
+
+/// Rock: grey with noise and moss on upward faces.
+Vec3f rock(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float n = fbm3(p.x() * 3.0f, p.y() * 3.0f, p.z() * 3.0f, 3, kRock);
+  Vec3f c = Vec3f(0.3f, 0.29f, 0.27f) * (0.65f + 0.7f * n);
+  const float moss = smoothstep(0.55f, 0.85f, s.normal.z()) *
+                     smoothstep(0.4f, 0.6f, value_noise3(p.x() * 1.5f, p.y() * 1.5f, p.z() * 1.5f, kRock + 1));
+  return lerp(c, Vec3f(0.1f, 0.16f, 0.05f), moss);
+}
+
+/// Wood of logs and stumps: weathered bark-brown sides, pale cut faces on top with rings.
+Vec3f wood(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const Vec3f side = bark(s, Vec3f(0.2f, 0.14f, 0.09f), 0.3f, 0.5f);
+  const float rings = value_noise2(p.x() * 20.0f, p.y() * 20.0f, kWood);
+  const Vec3f cut = Vec3f(0.42f, 0.31f, 0.19f) * (0.85f + 0.3f * rings);
+  return lerp(side, cut, smoothstep(0.85f, 0.95f, s.normal.z()));
+}
+
+}  // namespace
+
+Vec3f material_albedo(const SurfacePoint& s) {
+  switch (s.material) {
+    case Material::Ground: return ground(s);
+    case Material::Trail: return trail(s);
+    case Material::BarkConifer: return bark(s, Vec3f(0.15f, 0.085f, 0.055f), 0.45f, 0.0f);
+    case Material::BarkBroadleaf: return bark(s, Vec3f(0.2f, 0.18f, 0.15f), 0.25f, 0.6f);
+    case Material::BarkDead: return bark(s, Vec3f(0.33f, 0.31f, 0.28f), 0.5f, 0.0f);
+    case Material::Needles: return foliage(s, Vec3f(0.045f, 0.1f, 0.035f));
+    case Material::Leaves: return foliage(s, Vec3f(0.08f, 0.17f, 0.035f));
+    case Material::Grass: return grass(s);
+    case Material::Fern: return foliage(s, Vec3f(0.07f, 0.18f, 0.04f));
+    case Material::ShrubLeaves: return foliage(s, Vec3f(0.07f, 0.14f, 0.045f));
+    case Material::Rock: return rock(s);
+    case Material::Wood: return wood(s);
+    case Material::Count: break;
+  }
+  return Vec3f(0.5f, 0.0f, 0.5f);
+}
+
+float material_translucency(Material m) {
+  switch (m) {
+    case Material::Needles:
+    case Material::Leaves:
+    case Material::Grass:
+    case Material::Fern:
+    case Material::ShrubLeaves: return 1.0f;
+    default: return 0.0f;
+  }
+}
+
+}  // namespace silva::render

@@ -1,0 +1,119 @@
+#include "render/resolve.hpp"
+
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "render/raster_conventions.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// The part a triangle belongs to (parts cover the index buffer in order).
+const MeshPart& part_of(const Mesh& mesh, uint32_t triangle) {
+  const uint32_t index = triangle * 3;
+  auto it = std::upper_bound(mesh.parts.begin(), mesh.parts.end(), index,
+                             [](uint32_t i, const MeshPart& p) { return i < p.first_index; });
+  return *(it - 1);
+}
+
+/// Writes a pixel that saw nothing.
+void write_miss(GBuffer& g, size_t i) {
+  g.depth[i] = 0.0f;
+  g.position[i] = Vec3f::Zero();
+  g.normal[i] = Vec3f::Zero();
+  g.uv[i] = Vec2f::Zero();
+  g.role[i] = Role::Background;
+  g.material[i] = Material::Ground;
+  g.instance_id[i] = 0;
+  g.variation[i] = 0;
+}
+
+/// Re-intersects pixel (u, v)'s centre ray with its triangle and writes the surface.
+void write_hit(const Scene& scene, const Camera& cam, uint32_t instance, uint32_t lod, uint32_t triangle, int u, int v,
+               GBuffer& g, size_t i) {
+  const Instance& inst = scene.instances[instance];
+  const Mesh& mesh = *scene.meshes[inst.mesh].lods[lod];
+  const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
+  const uint32_t* idx = &mesh.indices[size_t(triangle) * 3];
+  Vec3d p[3];
+  for (int k = 0; k < 3; ++k) p[k] = m.leftCols<3>() * mesh.positions[idx[k]].cast<double>() + m.col(3);
+  const Vec3d origin = cam.position();
+  const Vec3d dir = cam.ray_direction(u, v);  // camera z component 1: t is metric z
+  const Vec3d e1 = p[1] - p[0], e2 = p[2] - p[0];
+  const Vec3d pvec = dir.cross(e2);
+  const double det = e1.dot(pvec);
+  double b1 = 1.0 / 3.0, b2 = 1.0 / 3.0, t = 0.0;
+  if (det != 0.0) {
+    const Vec3d s = origin - p[0];
+    const Vec3d qvec = s.cross(e1);
+    b1 = s.dot(pvec) / det;
+    b2 = dir.dot(qvec) / det;
+    t = e2.dot(qvec) / det;
+  }
+  if (!(t > 0.0)) {  // ray parallel to the triangle's plane: fall back to the centroid's depth
+    const Vec3d centroid = (p[0] + p[1] + p[2]) / 3.0;
+    t = (cam.world_to_camera().block<1, 3>(2, 0) * centroid)(0) + cam.world_to_camera()(2, 3);
+    b1 = b2 = 1.0 / 3.0;
+  }
+  const double b0 = 1.0 - b1 - b2;
+  const Vec3d hit = origin + t * dir;
+  // Normal: interpolated vertex normals through the inverse transpose (cofactor matrix).
+  const Mat3d lin = m.leftCols<3>();
+  Mat3d cof;
+  cof.col(0) = lin.col(1).cross(lin.col(2));
+  cof.col(1) = lin.col(2).cross(lin.col(0));
+  cof.col(2) = lin.col(0).cross(lin.col(1));
+  if (lin.determinant() < 0.0) cof = -cof;
+  Vec3d n_obj = e1.cross(e2);  // fallback: geometric normal (already in world space)
+  bool object_space = false;
+  if (!mesh.normals.empty()) {
+    n_obj = b0 * mesh.normals[idx[0]].cast<double>() + b1 * mesh.normals[idx[1]].cast<double>() +
+            b2 * mesh.normals[idx[2]].cast<double>();
+    object_space = true;
+  }
+  Vec3d n = object_space ? Vec3d(cof * n_obj) : n_obj;
+  const double len = n.norm();
+  n = len > 0.0 ? Vec3d(n / len) : Vec3d(-dir.normalized());
+  if (n.dot(dir) > 0.0) n = -n;
+  Vec2f uv = Vec2f::Zero();
+  if (!mesh.uvs.empty()) {
+    const Eigen::Vector2d w = b0 * mesh.uvs[idx[0]].cast<double>() + b1 * mesh.uvs[idx[1]].cast<double>() +
+                              b2 * mesh.uvs[idx[2]].cast<double>();
+    uv = w.cast<float>();
+  }
+  const MeshPart& part = part_of(mesh, triangle);
+  g.depth[i] = float(t);
+  g.position[i] = hit.cast<float>();
+  g.normal[i] = n.cast<float>();
+  g.uv[i] = uv;
+  g.role[i] = part.role;
+  g.material[i] = part.material;
+  g.instance_id[i] = inst.instance_id;
+  g.variation[i] = inst.variation;
+}
+
+}  // namespace
+
+void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityBuffer& vis,
+                     std::span<const uint32_t> instance_lod, GBuffer& out) {
+  if (out.width != vis.width || out.height != vis.height || out.depth.size() != vis.size())
+    out.resize(vis.width, vis.height);
+  tbb::parallel_for(tbb::blocked_range<int>(0, vis.height, 8), [&](const tbb::blocked_range<int>& rows) {
+    for (int v = rows.begin(); v != rows.end(); ++v) {
+      for (int u = 0; u < vis.width; ++u) {
+        const size_t i = size_t(v) * size_t(vis.width) + size_t(u);
+        const uint32_t inst = vis.instance[i];
+        if (inst == kNoInstance) {
+          write_miss(out, i);
+        } else {
+          write_hit(scene, camera, inst, instance_lod[inst], vis.triangle[i], u, v, out, i);
+        }
+      }
+    }
+  });
+}
+
+}  // namespace silva::render

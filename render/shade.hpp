@@ -1,0 +1,32 @@
+#pragma once
+/// @file The RGB pass: G-buffer + camera + lighting preset (+ sun shadow map) -> 8-bit sRGB image.
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "render/gbuffer.hpp"
+#include "render/lighting.hpp"
+
+namespace silva::render {
+
+/// Everything shade_rgb reads. `shadow` may be null (no sun shadows).
+struct ShadeInputs {
+  const GBuffer& gbuffer;         ///< The view's resolved surfaces (depth 0 = sky).
+  const Camera& camera;           ///< The view's camera (same size as the G-buffer).
+  const LightingPreset& preset;   ///< Sun, sky, fog, clouds, exposure.
+  const ShadowMap* shadow;        ///< Sun shadow map, or nullptr.
+  uint64_t seed;                  ///< World seed (film grain stream).
+  std::string_view sequence;      ///< Sequence name (film grain key).
+  uint64_t frame;                 ///< Frame number within the sequence (film grain key).
+  float film_grain;               ///< Grain std-dev in display-linear [0, 1] units (camera.film_grain).
+};
+
+/// Shades every pixel: procedural material albedo lit by the sun (shadow-mapped, back-lit foliage
+/// translucency) and the sky/ground hemisphere (screen-space AO), through exponential height
+/// fog; sky pixels get the analytic sky. Then exposure, ACES tone mapping, film grain, sRGB.
+/// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
+/// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
+void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out);
+
+}  // namespace silva::render

@@ -1,0 +1,16 @@
+#pragma once
+/// @file Cheap screen-space ambient occlusion from the G-buffer's world positions and normals.
+#include "core/camera.hpp"
+#include "render/gbuffer.hpp"
+
+namespace silva::render {
+
+/// World radius (metres) within which neighbouring surfaces occlude ambient light.
+inline constexpr float kAoRadius = 0.6f;
+
+/// Ambient visibility in [0, 1] (1 = open) of pixel (u, v), which must have a hit: 8 neighbours
+/// in a fixed pattern within 0.6 kAoRadius (projected); each one above the pixel's tangent plane and
+/// closer than kAoRadius occludes in proportion to its elevation and closeness. Pure function.
+float screen_space_ao(const GBuffer& g, const Camera& camera, int u, int v);
+
+}  // namespace silva::render

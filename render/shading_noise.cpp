@@ -1,0 +1,65 @@
+#include "render/shading_noise.hpp"
+
+namespace silva::render {
+
+namespace {
+/// Integer lattice cell and fraction of one coordinate.
+struct Cell {
+  int32_t i;  ///< Lattice index (floor).
+  float w;    ///< Smooth weight of the fraction.
+};
+
+Cell cell_of(float x) {
+  const float f = std::floor(x);
+  return {int32_t(f), smooth_weight(x - f)};
+}
+}  // namespace
+
+float value_noise2(float x, float y, uint32_t salt) {
+  const Cell cx = cell_of(x), cy = cell_of(y);
+  const float v00 = lattice_value(lattice_hash(cx.i, cy.i, 0, salt));
+  const float v10 = lattice_value(lattice_hash(cx.i + 1, cy.i, 0, salt));
+  const float v01 = lattice_value(lattice_hash(cx.i, cy.i + 1, 0, salt));
+  const float v11 = lattice_value(lattice_hash(cx.i + 1, cy.i + 1, 0, salt));
+  return mix(mix(v00, v10, cx.w), mix(v01, v11, cx.w), cy.w);
+}
+
+float value_noise3(float x, float y, float z, uint32_t salt) {
+  const Cell cx = cell_of(x), cy = cell_of(y), cz = cell_of(z);
+  float layer[2];
+  for (int k = 0; k < 2; ++k) {
+    const float v00 = lattice_value(lattice_hash(cx.i, cy.i, cz.i + k, salt));
+    const float v10 = lattice_value(lattice_hash(cx.i + 1, cy.i, cz.i + k, salt));
+    const float v01 = lattice_value(lattice_hash(cx.i, cy.i + 1, cz.i + k, salt));
+    const float v11 = lattice_value(lattice_hash(cx.i + 1, cy.i + 1, cz.i + k, salt));
+    layer[k] = mix(mix(v00, v10, cx.w), mix(v01, v11, cx.w), cy.w);
+  }
+  return mix(layer[0], layer[1], cz.w);
+}
+
+float fbm2(float x, float y, int octaves, uint32_t salt) {
+  float sum = 0, amp = 1, norm = 0;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amp * value_noise2(x, y, salt + uint32_t(o));
+    norm += amp;
+    amp *= 0.5f;
+    x *= 2.0f;
+    y *= 2.0f;
+  }
+  return sum / norm;
+}
+
+float fbm3(float x, float y, float z, int octaves, uint32_t salt) {
+  float sum = 0, amp = 1, norm = 0;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amp * value_noise3(x, y, z, salt + uint32_t(o));
+    norm += amp;
+    amp *= 0.5f;
+    x *= 2.0f;
+    y *= 2.0f;
+    z *= 2.0f;
+  }
+  return sum / norm;
+}
+
+}  // namespace silva::render

@@ -1,0 +1,43 @@
+#include "render/shadow_lookup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace silva::render {
+
+namespace {
+constexpr double kMaxSlope = 8.0;        ///< Largest receiver depth gradient used (metres per metre).
+constexpr double kConstantBias = 0.02;  ///< Metres, on top of half a texel.
+}  // namespace
+
+float shadow_visibility(const ShadowMap& map, const Vec3f& position, const Vec3f& normal, const Vec3f& to_sun) {
+  if (map.width <= 0 || map.height <= 0 || map.texel_size <= 0.0) return 1.0f;
+  const double texel = map.texel_size;
+  const double side = normal.dot(to_sun) < 0.0f ? -1.0 : 1.0;
+  const Vec3d n = normal.cast<double>() * side;
+  const Vec3d p = position.cast<double>() + n * texel;
+  const Eigen::Vector4d l = map.world_to_light * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
+  const double fx = (l.x() - map.origin_x) / texel, fy = (l.y() - map.origin_y) / texel;
+  if (!(fx >= 0.0 && fy >= 0.0 && fx < double(map.width) && fy < double(map.height))) return 1.0f;
+  // Receiver plane in light space: depth changes by (gx, gy) per metre of light x, y.
+  const Vec3d nl = map.world_to_light.block<3, 3>(0, 0) * n;
+  const double nz = nl.z() < 0.0 ? std::min(nl.z(), -1e-6) : std::max(nl.z(), 1e-6);
+  const double gx = std::clamp(-nl.x() / nz, -kMaxSlope, kMaxSlope);
+  const double gy = std::clamp(-nl.y() / nz, -kMaxSlope, kMaxSlope);
+  const double base = l.z() - (0.5 * texel + kConstantBias);
+  const int tx = int(fx), ty = int(fy);
+  int lit = 0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    const int y = std::clamp(ty + dy, 0, map.height - 1);
+    const double oy = (double(y) + 0.5 - fy) * texel;
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int x = std::clamp(tx + dx, 0, map.width - 1);
+      const double ox = (double(x) + 0.5 - fx) * texel;
+      const double receiver = base + gx * ox + gy * oy;
+      lit += float(receiver) <= map.depth[size_t(y) * size_t(map.width) + size_t(x)] ? 1 : 0;
+    }
+  }
+  return float(lit) * (1.0f / 9.0f);
+}
+
+}  // namespace silva::render

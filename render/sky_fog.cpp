@@ -1,0 +1,48 @@
+#include "render/sky_fog.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/shading_math.hpp"
+
+namespace silva::render {
+
+HeightFog::HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& camera_position)
+    : sky_(sky),
+      camera_(camera_position),
+      fog_color_(to_vec(preset.fog_color) * preset.sky_intensity),
+      falloff_(std::max(preset.fog_height_falloff, 0.0f)),
+      camera_density_(float(double(preset.fog_density) *
+                            det_exp(-double(preset.fog_height_falloff) *
+                                    double(camera_position.z() - preset.fog_height)))),
+      sun_scatter_(preset.fog_sun_scatter) {}
+
+float HeightFog::amount(const Vec3f& point) const {
+  if (camera_density_ <= 0.0f) return 0.0f;
+  const Vec3f d = point - camera_;
+  const float length = d.norm();
+  const float k = falloff_ * d.z();
+  // Mean of exp(-falloff * dz * s) over s in [0, 1]; 1 for a level ray.
+  const float height_factor = std::abs(k) < 1e-4f ? 1.0f : float((1.0 - det_exp(-double(k))) / double(k));
+  const float optical_depth = camera_density_ * length * height_factor;
+  return 1.0f - float(det_exp(-double(optical_depth)));
+}
+
+Vec3f HeightFog::color(const Vec3f& dir) const {
+  const float cs = std::max(dir.dot(sky_.to_sun), 0.0f);
+  float toward = cs * cs;
+  toward *= toward;
+  toward *= toward;
+  const Vec3f level_dir = Vec3f(dir.x(), dir.y(), 0.0f);
+  const Vec3f horizon = sky_.gradient(level_dir.squaredNorm() > 0.0f ? level_dir.normalized() : dir);
+  const Vec3f base = fog_color_ + (horizon - fog_color_) * 0.5f;
+  return base + sky_.sun_radiance * (0.3f * sun_scatter_ * toward);
+}
+
+Vec3f HeightFog::apply(const Vec3f& surface, const Vec3f& point, const Vec3f& dir) const {
+  const float f = amount(point);
+  if (f <= 0.0f) return surface;
+  return surface + (color(dir) - surface) * f;
+}
+
+}  // namespace silva::render

@@ -1,0 +1,30 @@
+#pragma once
+/// @file Exponential height fog seen from one camera, coloured by the sky towards the sun/horizon.
+#include "core/types.hpp"
+#include "render/lighting.hpp"
+#include "render/sky.hpp"
+
+namespace silva::render {
+
+/// Height fog of one preset and camera position: density(z) = fog_density * exp(-falloff (z - fog_height)).
+struct HeightFog {
+  /// Precomputes the camera-height factor of the fog integral.
+  HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& camera_position);
+  /// Fraction in [0, 1) of the view towards `point` replaced by fog (optical depth integrated
+  /// along the straight ray from the camera, in closed form).
+  float amount(const Vec3f& point) const;
+  /// Fog colour along unit view direction `dir`: horizon-matched, warmed towards the sun.
+  Vec3f color(const Vec3f& dir) const;
+  /// `surface` seen through the fog towards `point` along unit direction `dir`.
+  Vec3f apply(const Vec3f& surface, const Vec3f& point, const Vec3f& dir) const;
+
+ private:
+  const Sky& sky_;
+  Vec3f camera_;
+  Vec3f fog_color_;
+  float falloff_;
+  float camera_density_;  ///< Fog density at the camera height.
+  float sun_scatter_;
+};
+
+}  // namespace silva::render

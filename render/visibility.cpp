@@ -1,0 +1,71 @@
+#include "render/visibility.hpp"
+
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include "render/raster_conventions.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// Copies a rasterised tile's winners into the visibility buffer.
+void write_tile(const TileJob& job, const TileScratch& s, VisibilityBuffer& out) {
+  for (int y = 0; y < job.h; ++y) {
+    const size_t src = size_t(y) * size_t(job.stride);
+    const size_t dst = size_t(job.y0 + y) * size_t(out.width) + size_t(job.x0);
+    for (int x = 0; x < job.w; ++x) {
+      const uint64_t key = s.key[src + size_t(x)];
+      const bool hit = key != kNoKey;
+      out.depth[dst + size_t(x)] = hit ? float(s.depth[src + size_t(x)]) : 0.0f;
+      out.instance[dst + size_t(x)] = hit ? uint32_t(key >> 32) : kNoInstance;
+      out.triangle[dst + size_t(x)] = hit ? uint32_t(key) : 0u;
+    }
+  }
+}
+
+}  // namespace
+
+void VisibilityBuffer::resize(int w, int h) {
+  width = w;
+  height = h;
+  depth.resize(size());
+  instance.resize(size());
+  triangle.resize(size());
+}
+
+TileCounters rasterise_tiles(const TileGrid& grid, double depth_clear, std::span<const GeometryStore* const> stores,
+                             TileScratchSet& scratch, VisibilityBuffer& out) {
+  tbb::combinable<TileCounters> totals;
+  tbb::parallel_for(tbb::blocked_range<int>(0, grid.count(), 1), [&](const tbb::blocked_range<int>& r) {
+    TileScratch& s = scratch.local();
+    TileCounters& counters = totals.local();
+    for (int tile = r.begin(); tile != r.end(); ++tile) {
+      TileJob job;
+      job.x0 = (tile % grid.tiles_x) * grid.tile_size;
+      job.y0 = (tile / grid.tiles_x) * grid.tile_size;
+      job.w = std::min(grid.tile_size, grid.width - job.x0);
+      job.h = std::min(grid.tile_size, grid.height - job.y0);
+      job.stride = grid.tile_size;
+      job.depth_clear = depth_clear;
+      s.sources.clear();
+      for (const GeometryStore* store : stores) {
+        const auto& bin = store->bins[size_t(tile)];
+        if (!bin.empty()) s.sources.push_back(TileSource{store->tris.data(), store->alphas.data(), bin.data(), bin.size()});
+      }
+      rasterise_tile(job, s.sources, s, counters);
+      write_tile(job, s, out);
+    }
+  });
+  TileCounters sum;
+  totals.combine_each([&](const TileCounters& c) {
+    sum.fragments += c.fragments;
+    sum.writes += c.writes;
+  });
+  return sum;
+}
+
+}  // namespace silva::render

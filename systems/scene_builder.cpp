@@ -1,0 +1,58 @@
+#include "systems/scene_builder.hpp"
+
+#include <cstring>
+
+#include "core/rng.hpp"
+#include "systems/collision_proxy.hpp"
+
+namespace silva::world {
+
+SceneBuilder::SceneBuilder(const assets::AssetLibrary& library) {
+  asset_meshes_.reserve(library.assets.size());
+  for (const assets::Asset& a : library.assets) {
+    render::MeshLods lods;
+    for (const Mesh& m : a.lods) lods.lods.push_back(&m);
+    lods.lod_screen_sizes = a.lod_screen_sizes;
+    asset_meshes_.push_back(std::move(lods));
+  }
+}
+
+uint32_t variation_seed(const Vec3f& position) {
+  uint32_t bits[3];
+  std::memcpy(bits, position.data(), sizeof bits);
+  return uint32_t(hash_combine(hash_combine(bits[0], bits[1]), bits[2]));
+}
+
+FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const {
+  FrameScene out;
+  render::Scene& scene = out.scene;
+  scene.meshes = asset_meshes_;
+  size_t objects = 0;
+  for (const auto& c : chunks) objects += c->objects.size();
+  scene.instances.reserve(objects + 2 * chunks.size());
+  auto add_world_mesh = [&](const Mesh& mesh) {
+    if (mesh.indices.empty()) return;
+    render::MeshLods lods;
+    lods.lods.push_back(&mesh);
+    scene.meshes.push_back(std::move(lods));
+    render::Instance inst;
+    inst.mesh = uint32_t(scene.meshes.size() - 1);
+    scene.instances.push_back(inst);
+  };
+  for (const auto& c : chunks) {
+    add_world_mesh(c->terrain);
+    add_world_mesh(c->trail);
+    for (const Vegetation& v : c->objects) {
+      render::Instance inst;
+      inst.object_to_world = object_to_world(v.position, v.yaw, v.scale);
+      inst.mesh = v.asset;
+      inst.instance_id = v.instance_id;
+      inst.variation = variation_seed(v.position);
+      scene.instances.push_back(inst);
+    }
+  }
+  out.chunks = std::move(chunks);
+  return out;
+}
+
+}  // namespace silva::world

@@ -1,0 +1,34 @@
+#pragma once
+/// @file Turns generated chunks + the asset library into a render::Scene for one view.
+#include <memory>
+#include <vector>
+
+#include "assets/library.hpp"
+#include "components/chunk.hpp"
+#include "render/scene.hpp"
+
+namespace silva::world {
+
+/// A scene plus the chunk contents its meshes point into (kept alive while it is drawn).
+struct FrameScene {
+  render::Scene scene;                                        ///< What the renderer draws.
+  std::vector<std::shared_ptr<const ChunkContent>> chunks;    ///< Owners of terrain/trail meshes.
+};
+
+/// Builds frame scenes; asset meshes come first (mesh index = asset index), then per-chunk
+/// terrain and trail meshes. Stuff (terrain, trail, grass, ferns) has instance id 0.
+class SceneBuilder {
+ public:
+  /// Registers every asset's LODs as drawable meshes.
+  explicit SceneBuilder(const assets::AssetLibrary& library);
+  /// Scene of the given chunks: terrain, trail piece and every object of each, in chunk order.
+  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
+
+ private:
+  std::vector<render::MeshLods> asset_meshes_;
+};
+
+/// Per-instance colour-variation seed derived from an object's position (stable across runs).
+uint32_t variation_seed(const Vec3f& position);
+
+}  // namespace silva::world

@@ -1,0 +1,133 @@
+#include "systems/world_build.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <xxhash.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "systems/chunk_regions.hpp"
+#include "systems/world_generator.hpp"
+
+namespace silva::world {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Seconds from t0 to now.
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Feeds a vector's bytes to the hash state.
+template <class T>
+void feed(XXH3_state_t* st, const std::vector<T>& v) {
+  const uint64_t n = v.size();
+  XXH3_64bits_update(st, &n, sizeof n);
+  for (const T& x : v) XXH3_64bits_update(st, x.data(), sizeof(typename T::Scalar) * size_t(x.size()));
+}
+
+/// Feeds a mesh (positions, normals, uvs, indices, part roles/materials).
+void feed_mesh(XXH3_state_t* st, const Mesh& m) {
+  feed(st, m.positions);
+  feed(st, m.normals);
+  feed(st, m.uvs);
+  XXH3_64bits_update(st, m.indices.data(), m.indices.size() * sizeof(uint32_t));
+  for (const MeshPart& p : m.parts) {
+    const uint32_t w[4] = {p.first_index, p.index_count, uint32_t(p.role), uint32_t(p.material)};
+    XXH3_64bits_update(st, w, sizeof w);
+  }
+}
+
+/// Feeds one chunk's content.
+void feed_chunk(XXH3_state_t* st, const ChunkContent& c) {
+  const int32_t ij[2] = {c.coord.i, c.coord.j};
+  XXH3_64bits_update(st, ij, sizeof ij);
+  feed_mesh(st, c.terrain);
+  feed_mesh(st, c.trail);
+  for (const Vegetation& v : c.objects) {
+    const uint32_t w[4] = {v.asset, uint32_t(v.role), uint32_t(v.placement), v.instance_id};
+    const float f[5] = {v.position.x(), v.position.y(), v.position.z(), v.yaw, v.scale};
+    XXH3_64bits_update(st, w, sizeof w);
+    XXH3_64bits_update(st, f, sizeof f);
+  }
+}
+
+/// Hash of chunks fed in order.
+uint64_t hash_of(const ChunkContent* begin, const ChunkContent* end) {
+  XXH3_state_t* st = XXH3_createState();
+  XXH3_64bits_reset(st);
+  for (const ChunkContent* c = begin; c != end; ++c) feed_chunk(st, *c);
+  const uint64_t h = XXH3_64bits_digest(st);
+  XXH3_freeState(st);
+  return h;
+}
+
+/// Adds a chunk's stats to the totals.
+void accumulate(WorldTotals& t, const ChunkStats& s) {
+  ++t.chunks;
+  t.triangles += s.triangles;
+  for (size_t r = 0; r < s.objects_by_role.size(); ++r) {
+    t.objects_by_role[r] += s.objects_by_role[r];
+    t.objects += s.objects_by_role[r];
+  }
+  t.candidates += s.candidates;
+  t.trail_rejected += s.trail_rejected;
+  t.adjusted += s.adjusted;
+  t.dropped += s.dropped;
+  t.ground_dropped += s.ground_dropped;
+  t.broad_queries += s.broad_queries;
+  t.narrow_queries += s.narrow_queries;
+  t.terrain_cpu_s += s.generate_s;
+  t.resolve_cpu_s += s.resolve_s;
+}
+
+}  // namespace
+
+uint64_t world_hash(const std::vector<ChunkContent>& chunks) {
+  return hash_of(chunks.data(), chunks.data() + chunks.size());
+}
+
+uint64_t chunk_hash(const ChunkContent& chunk) { return hash_of(&chunk, &chunk + 1); }
+
+World build_world(const WorldContext& ctx, std::vector<ChunkCoord> coords, int threads) {
+  const auto t0 = Clock::now();
+  std::sort(coords.begin(), coords.end());
+  coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
+  // Candidate table: the chunks themselves (with ground vegetation) and their rings (solids only).
+  std::map<ChunkCoord, ChunkCandidates> table;
+  std::map<ChunkCoord, bool> with_ground;
+  const int ring = ctx.neighbour_ring;
+  for (ChunkCoord c : coords) {
+    with_ground[c] = true;
+    for (int dj = -ring; dj <= ring; ++dj)
+      for (int di = -ring; di <= ring; ++di) with_ground.emplace(ChunkCoord{c.i + di, c.j + dj}, false);
+  }
+  std::vector<std::pair<ChunkCoord, bool>> jobs(with_ground.begin(), with_ground.end());
+  std::vector<ChunkCandidates*> slots;
+  for (const auto& [c, g] : jobs) slots.push_back(&table[c]);
+  World w;
+  w.chunks.resize(coords.size());
+  tbb::task_arena arena(std::max(1, threads));
+  arena.execute([&] {
+    tbb::parallel_for(size_t(0), jobs.size(),
+                      [&](size_t k) { *slots[k] = place_candidates(ctx, jobs[k].first, jobs[k].second); });
+    w.totals.place_s = since(t0);
+    const auto t1 = Clock::now();
+    const CandidateLookup lookup = [&](ChunkCoord c) -> const ChunkCandidates& { return table.at(c); };
+    tbb::parallel_for(size_t(0), coords.size(),
+                      [&](size_t k) { w.chunks[k] = generate_chunk(ctx, coords[k], table.at(coords[k]), lookup); });
+    w.totals.chunks_s = since(t1);
+  });
+  for (const ChunkContent& c : w.chunks) accumulate(w.totals, c.stats);
+  w.hash = world_hash(w.chunks);
+  w.totals.total_s = since(t0);
+  return w;
+}
+
+World build_default_world(const WorldContext& ctx, int threads) {
+  return build_world(ctx, default_world_chunks(ctx.config), threads);
+}
+
+}  // namespace silva::world

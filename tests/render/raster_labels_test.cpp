@@ -1,0 +1,154 @@
+// Labels: alpha-tested cards, roles and instance ids per part, LOD selection and instance culling.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "core/error.hpp"
+#include "raster_test_scenes.hpp"
+#include "render/instance_cull.hpp"
+#include "render/raster_conventions.hpp"
+#include "render/renderer.hpp"
+
+namespace silva::render {
+namespace {
+
+using test::OwnedScene;
+
+/// A camera at the origin whose axes are the world's (x right, y down, z forward).
+Camera screen_camera(int w, int h) {
+  Camera c = Camera::from_fov(w, h, 90.0, 0.05, 150.0);
+  c.camera_to_world = Mat4d::Identity();
+  return c;
+}
+
+TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
+  const Camera cam = screen_camera(128, 96);
+  auto mask = std::make_shared<AlphaMask>();
+  mask->width = 8;
+  mask->height = 8;
+  std::mt19937 gen(5);
+  for (int i = 0; i < 64; ++i) mask->alpha.push_back(uint8_t(gen() % 256));
+  mask->cutoff = 0.5f;
+  // A frontal card at z = 2 over x, y in [-1.5, 1.5] with uvs 0..2 (repeat wrap), seen from its front.
+  Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::TreeCanopy,
+                              false, mask);
+  card.uvs = {Vec2f(0, 0), Vec2f(0, 2), Vec2f(2, 2), Vec2f(2, 0)};
+  OwnedScene s;
+  s.add_instance(s.add_mesh(std::move(card)), Affine3f::Identity(), 7);
+  s.add_instance(s.add_mesh(test::make_quad({-9, -9, 5}, {-9, 9, 5}, {9, 9, 5}, {9, -9, 5}, Role::Ground)));
+  Renderer renderer;
+  GBuffer g;
+  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  int opaque = 0, holes = 0;
+  for (int v = 0; v < cam.height; ++v)
+    for (int u = 0; u < cam.width; ++u) {
+      const Vec3d d = cam.ray_direction(u, v) * 2.0;  // hit on the card plane z = 2
+      if (std::abs(d.x()) > 1.49 || std::abs(d.y()) > 1.49) continue;
+      // uv: u runs with x (0 at x = -1.5 to 2 at x = 1.5), v with y.
+      const double tu = (d.x() + 1.5) / 3.0 * 2.0, tv = (d.y() + 1.5) / 3.0 * 2.0;
+      const double fu = tu * 8.0, fv = tv * 8.0;
+      if (std::abs(fu - std::round(fu)) < 1e-3 || std::abs(fv - std::round(fv)) < 1e-3) continue;  // texel border
+      const bool want = mask->opaque(float(tu), float(tv));
+      const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
+      ASSERT_EQ(g.role[i], want ? Role::TreeCanopy : Role::Ground) << u << "," << v;
+      ASSERT_EQ(g.instance_id[i], want ? 7u : 0u);
+      ASSERT_FLOAT_EQ(g.depth[i], want ? 2.0f : 5.0f);
+      (want ? opaque : holes)++;
+    }
+  EXPECT_GT(opaque, 500);
+  EXPECT_GT(holes, 500);
+}
+
+TEST(RasterLabels, PartRolesInstanceIdsAndVariationsSurvive) {
+  const Camera cam = screen_camera(96, 64);
+  // One mesh, two parts: left quad "trunk", right quad "canopy".
+  Mesh m = test::make_quad({-1, -1, 0}, {-1, 1, 0}, {0, 1, 0}, {0, -1, 0}, Role::TreeTrunk);
+  m.append(test::make_quad({0, -1, 0}, {0, 1, 0}, {1, 1, 0}, {1, -1, 0}, Role::TreeCanopy));
+  m.parts[1].material = Material::Leaves;
+  OwnedScene s;
+  const uint32_t mesh = s.add_mesh(std::move(m));
+  s.add_instance(mesh, test::place(Vec3f(-1.2f, 0, 3)), 0x01020003u, 11);
+  s.add_instance(mesh, test::place(Vec3f(1.2f, 0, 3)), 0xff000001u, 22);
+  Renderer renderer;
+  GBuffer g;
+  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  const auto at = [&](double x, double y, double z) {
+    const int u = int(cam.fx * x / z + cam.cx), v = int(cam.fy * y / z + cam.cy);
+    return size_t(v) * size_t(cam.width) + size_t(u);
+  };
+  const struct {
+    double x;
+    Role role;
+    uint32_t id, variation;
+    Material material;
+  } expect[] = {{-1.7, Role::TreeTrunk, 0x01020003u, 11, Material::Ground},
+                {-0.7, Role::TreeCanopy, 0x01020003u, 11, Material::Leaves},
+                {0.7, Role::TreeTrunk, 0xff000001u, 22, Material::Ground},
+                {1.7, Role::TreeCanopy, 0xff000001u, 22, Material::Leaves}};
+  for (const auto& e : expect) {
+    const size_t i = at(e.x, 0.3, 3.0);
+    EXPECT_EQ(g.role[i], e.role);
+    EXPECT_EQ(g.instance_id[i], e.id);
+    EXPECT_EQ(g.variation[i], e.variation);
+    EXPECT_EQ(g.material[i], e.material);
+  }
+  const size_t sky = at(0.0, 0.0, 3.0);  // between the two instances: nothing
+  EXPECT_EQ(g.role[sky], Role::Background);
+  EXPECT_EQ(g.depth[sky], 0.0f);
+  EXPECT_EQ(g.instance_id[sky], 0u);
+}
+
+TEST(RasterLabels, LodFollowsProjectedSizeAndCanBeForcedOff) {
+  const Camera cam = screen_camera(64, 64);
+  Mesh full = test::make_quad({-0.5f, -0.5f, 0}, {-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}, {0.5f, -0.5f, 0}, Role::TreeTrunk);
+  Mesh coarse = test::make_quad({-0.5f, -0.5f, 0}, {-0.5f, 0.5f, 0}, {0.5f, 0.5f, 0}, {0.5f, -0.5f, 0}, Role::Shrub);
+  OwnedScene s;
+  s.meshes.push_back(std::make_unique<Mesh>(std::move(full)));
+  s.meshes.push_back(std::make_unique<Mesh>(std::move(coarse)));
+  s.scene.meshes.push_back(MeshLods{{s.meshes[0].get(), s.meshes[1].get()}, {0.2f}, {}});
+  s.add_instance(0, test::place(Vec3f(-1, 0, 2)), 1);    // diameter 1.41 m at 2 m: ~0.7 of the height
+  s.add_instance(0, test::place(Vec3f(3, 0, 20), 0.0f, 4.0f), 2);  // ~0.14 of the height
+  s.add_instance(0, test::place(Vec3f(0, 0, -5)), 3);    // behind the camera
+  Renderer renderer;
+  GBuffer g;
+  RenderStats stats;
+  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g, &stats);
+  ASSERT_EQ(renderer.instance_lods().size(), 3u);
+  EXPECT_EQ(renderer.instance_lods()[0], 0u);
+  EXPECT_EQ(renderer.instance_lods()[1], 1u);
+  EXPECT_EQ(renderer.instance_lods()[2], kCulled);
+  EXPECT_EQ(stats.instances_submitted, 3u);
+  EXPECT_EQ(stats.instances_culled, 1u);
+  EXPECT_EQ(stats.triangles_submitted, 4u);
+  std::set<Role> roles(g.role.begin(), g.role.end());
+  EXPECT_TRUE(roles.count(Role::TreeTrunk) && roles.count(Role::Shrub));
+  RenderOptions no_lod;
+  no_lod.lod = false;
+  renderer.render_gbuffer(s.scene, cam, no_lod, g);
+  EXPECT_EQ(renderer.instance_lods()[1], 0u);
+  roles = std::set<Role>(g.role.begin(), g.role.end());
+  EXPECT_FALSE(roles.count(Role::Shrub));
+}
+
+TEST(RasterLabels, BadSceneInputIsAnInputError) {
+  const Camera cam = screen_camera(16, 16);
+  OwnedScene s;
+  s.add_mesh(test::make_quad({-1, -1, 2}, {-1, 1, 2}, {1, 1, 2}, {1, -1, 2}, Role::Ground));
+  s.add_instance(3);  // no such mesh
+  Renderer renderer;
+  GBuffer g;
+  EXPECT_THROW(renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g), InputError);
+  s.scene.instances[0].mesh = 0;
+  s.meshes[0]->indices[2] = 99;  // index past the vertices
+  EXPECT_THROW(renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g), InputError);
+  s.meshes[0]->indices[2] = 2;
+  RenderOptions bad_tile;
+  bad_tile.tile_size = 12;
+  EXPECT_THROW(renderer.render_gbuffer(s.scene, cam, bad_tile, g), InputError);
+  EXPECT_NO_THROW(renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g));
+}
+
+}  // namespace
+}  // namespace silva::render

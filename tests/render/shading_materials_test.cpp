@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include "render/materials.hpp"
+
+namespace silva::render {
+namespace {
+
+SurfacePoint point(Material m, Vec3f p = Vec3f(3.2f, -1.7f, 0.4f), uint32_t variation = 1) {
+  return {p, Vec3f(0, 0, 1), Vec2f(0.5f, 0.5f), m, variation};
+}
+
+TEST(ShadingMaterials, EveryMaterialIsAPlausibleDeterministicAlbedo) {
+  for (int m = 0; m < int(Material::Count); ++m) {
+    for (int k = 0; k < 50; ++k) {
+      const SurfacePoint s = point(Material(m), Vec3f(0.37f * float(k), -0.61f * float(k), 0.05f * float(k)));
+      const Vec3f a = material_albedo(s);
+      EXPECT_TRUE(a.allFinite());
+      EXPECT_GT(a.minCoeff(), 0.0f) << material_name(Material(m));
+      EXPECT_LT(a.maxCoeff(), 0.6f) << material_name(Material(m));  // natural surfaces are darker than 60 %
+      EXPECT_EQ(a, material_albedo(s));
+    }
+  }
+}
+
+TEST(ShadingMaterials, FoliageIsGreenAndVariesPerInstance) {
+  for (Material m : {Material::Needles, Material::Leaves, Material::Fern, Material::ShrubLeaves}) {
+    const Vec3f a = material_albedo(point(m, Vec3f(1, 2, 3), 1));
+    const Vec3f b = material_albedo(point(m, Vec3f(1, 2, 3), 2));
+    EXPECT_GT(a.y(), a.x()) << material_name(m);
+    EXPECT_GT(a.y(), a.z()) << material_name(m);
+    EXPECT_NE(a, b) << material_name(m);
+    EXPECT_EQ(material_translucency(m), 1.0f);
+  }
+  EXPECT_EQ(material_translucency(Material::BarkConifer), 0.0f);
+  EXPECT_EQ(material_translucency(Material::Ground), 0.0f);
+}
+
+TEST(ShadingMaterials, BarkVariesAcrossTheTrunkMoreThanAlongIt) {
+  // Vertical streaks: moving 5 cm around the trunk changes the colour more than moving 5 cm up.
+  double across = 0, along = 0;
+  for (int k = 0; k < 200; ++k) {
+    const Vec3f p(0.3f + 0.013f * float(k), 0.2f, 1.0f + 0.021f * float(k));
+    const Vec3f a = material_albedo(point(Material::BarkConifer, p));
+    across += (material_albedo(point(Material::BarkConifer, p + Vec3f(0.05f, 0, 0))) - a).norm();
+    along += (material_albedo(point(Material::BarkConifer, p + Vec3f(0, 0, 0.05f))) - a).norm();
+  }
+  EXPECT_GT(across, 1.5 * along);
+}
+
+TEST(ShadingMaterials, TrailEdgesBlendIntoTheGround) {
+  const Vec3f p(4.0f, 1.0f, 0.0f);
+  SurfacePoint edge = point(Material::Trail, p), centre = point(Material::Trail, p);
+  edge.uv.x() = 0.001f;
+  centre.uv.x() = 0.5f;
+  const Vec3f ground = material_albedo(point(Material::Ground, p));
+  const float edge_gap = (material_albedo(edge) - ground).norm();
+  const float centre_gap = (material_albedo(centre) - ground).norm();
+  EXPECT_GT(centre_gap, 1e-2f);
+  EXPECT_LT(edge_gap, 0.5f * centre_gap);
+}
+
+}  // namespace
+}  // namespace silva::render

@@ -1,0 +1,23 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/shading_math.hpp"
+
+namespace silva::render {
+namespace {
+
+TEST(ShadingMath, ExpMatchesLibmClosely) {
+  for (double x = -60.0; x <= 60.0; x += 0.37) EXPECT_NEAR(det_exp(x) / std::exp(x), 1.0, 4e-15) << x;
+  EXPECT_EQ(det_exp(0.0), 1.0);
+  EXPECT_EQ(det_exp(-800.0), 0.0);
+}
+
+TEST(ShadingMath, LogMatchesLibmClosely) {
+  for (double x = 1e-12; x < 1e6; x *= 1.7) EXPECT_NEAR(det_log(x), std::log(x), 4e-15 * std::max(1.0, std::abs(std::log(x)))) << x;
+  EXPECT_EQ(det_log(1.0), 0.0);
+  EXPECT_NEAR(det_exp(det_log(0.3)), 0.3, 1e-15);
+}
+
+}  // namespace
+}  // namespace silva::render

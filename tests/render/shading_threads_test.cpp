@@ -1,0 +1,43 @@
+#include <gtest/gtest.h>
+
+#include <tbb/task_arena.h>
+
+#include "core/error.hpp"
+
+#include "render/shade.hpp"
+#include "shading_scene.hpp"
+
+namespace silva::render {
+namespace {
+
+std::vector<uint8_t> shade_with_threads(int threads, const LightingPreset& preset) {
+  const Camera cam = test::test_camera(160, 96, 8);
+  GBuffer g = test::plane_gbuffer(cam, Material::Ground, 12.0);
+  for (size_t i = 0; i < g.size(); ++i)  // a mix of materials across the image
+    if (g.depth[i] > 0 && g.material[i] == Material::Ground) g.material[i] = Material(i / 7 % 12);
+  const ShadowMap map = test::plane_shadow_map(sun_direction(preset).cast<double>(), 256, 0.2, 2.0, 3.0);
+  std::vector<uint8_t> rgb;
+  tbb::task_arena arena(threads);
+  arena.execute([&] { shade_rgb({g, cam, preset, &map, 11, "random", 2, 0.015f}, rgb); });
+  return rgb;
+}
+
+TEST(ShadingThreads, OneAndTwoThreadsGiveIdenticalBytes) {
+  for (const auto& [name, preset] : builtin_presets()) {
+    const std::vector<uint8_t> one = shade_with_threads(1, preset);
+    const std::vector<uint8_t> two = shade_with_threads(2, preset);
+    ASSERT_EQ(one.size(), size_t(160 * 96 * 3));
+    EXPECT_EQ(one, two) << name;
+  }
+}
+
+TEST(ShadingThreads, MismatchedCameraIsAnInputError) {
+  const Camera cam = test::test_camera(16, 8, 0);
+  const GBuffer g = test::plane_gbuffer(test::test_camera(8, 8, 0), Material::Ground);
+  const LightingPreset day = preset_day();
+  std::vector<uint8_t> rgb;
+  EXPECT_THROW(shade_rgb({g, cam, day, nullptr, 0, "random", 0, 0.0f}, rgb), InputError);
+}
+
+}  // namespace
+}  // namespace silva::render
