@@ -44,10 +44,12 @@ Shard parse_shard(const std::string& text) {
 int generate(const GenerateArgs& args) {
   const Reporter reporter(args.output);
   GenerateRequest request;
-  request.config = load_run_config(args.sources, reporter, /*draw_seed=*/!args.resume);
+  // Shards of one dataset must agree on the seed, so a shard never draws one from the clock.
+  const bool draw_seed = !args.resume && !args.shard;
+  request.config = load_run_config(args.sources, reporter, draw_seed);
   if (args.shard) {
     request.shard = parse_shard(*args.shard);
-    if (!request.config.seed_given || request.config.seed_from_clock) {
+    if (!request.config.seed_given) {
       throw InputError("--shard " + *args.shard + " needs an explicit seed (--seed N or seed in the config)");
     }
   }

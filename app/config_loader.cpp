@@ -55,8 +55,8 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
         throw InputError(where + ": lighting.presets must hold tables [lighting.presets.<name>], got " +
                          describe_node(node));
       }
+      parse_preset_tables(*node.as_table(), loaded.source);  // checks every field where its source is known
       loaded.lighting_presets = *node.as_table();
-      parse_preset_tables(loaded.lighting_presets, loaded.source);  // checks every field
     } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {

@@ -111,7 +111,7 @@ void assign_number_list(const ConfigKey& key, std::vector<double>& out, const to
 std::string describe_node(const toml::node& node) {
   std::ostringstream text;
   switch (node.type()) {
-    case toml::node_type::string: text << "a string (" << *node.as_string() << ")"; break;
+    case toml::node_type::string: text << "a string (\"" << node.as_string()->get() << "\")"; break;
     case toml::node_type::integer: text << "an integer (" << *node.as_integer() << ")"; break;
     case toml::node_type::floating_point: text << "a float (" << *node.as_floating_point() << ")"; break;
     case toml::node_type::boolean: text << "a boolean (" << *node.as_boolean() << ")"; break;

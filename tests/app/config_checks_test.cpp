@@ -33,7 +33,7 @@ TEST(ConfigChecks, ChunkSizeIsAWholeMultiple) {
             "a.toml: terrain.chunk_size = 32 must be a whole multiple of terrain.vertex_spacing = 0.3");
   EXPECT_EQ(check_message([](Config& c) { c.vegetation.grid_spacing = 3; }),
             "a.toml: terrain.chunk_size = 32 must be a whole multiple of vegetation.grid_spacing = 3");
-  EXPECT_EQ(check_message([](Config& c) { c.terrain.vertex_spacing = 0.1; c.terrain.chunk_size = 25.6; }), "");
+  EXPECT_EQ(check_message([](Config& c) { c.terrain.vertex_spacing = 0.1; c.terrain.chunk_size = 25.6; c.vegetation.grid_spacing = 3.2; }), "");
   EXPECT_TRUE(is_whole_multiple(32, 0.1));
   EXPECT_FALSE(is_whole_multiple(1, 2));
 }

@@ -53,8 +53,12 @@ TEST(ConfigSchema, DefaultsAreInsideTheirRanges) {
   config.seed = 1;
   for (const ConfigKey& key : config_schema()) {
     const FieldRef field = key.field(config);
-    if (const auto* d = std::get_if<double*>(&field)) EXPECT_TRUE(key.range.contains(**d)) << key.name;
-    if (const auto* i = std::get_if<int*>(&field)) EXPECT_TRUE(key.range.contains(**i)) << key.name;
+    if (const auto* d = std::get_if<double*>(&field)) {
+      EXPECT_TRUE(key.range.contains(**d)) << key.name;
+    }
+    if (const auto* i = std::get_if<int*>(&field)) {
+      EXPECT_TRUE(key.range.contains(**i)) << key.name;
+    }
   }
 }
 

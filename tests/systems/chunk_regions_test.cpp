@@ -14,9 +14,12 @@ TEST(ChunkRegions, DefaultWorldIsEveryChunkWithinRenderDistance) {
   EXPECT_GT(chunks.size(), 948u);
   EXPECT_LT(chunks.size(), 1100u);
   EXPECT_TRUE(std::is_sorted(chunks.begin(), chunks.end()));
-  EXPECT_NE(std::find(chunks.begin(), chunks.end(), ChunkCoord{-16, -16}), chunks.end());
-  EXPECT_NE(std::find(chunks.begin(), chunks.end(), ChunkCoord{15, 15 + 7}), chunks.end());  // 250 m above
-  EXPECT_EQ(std::find(chunks.begin(), chunks.end(), ChunkCoord{15 + 7, 15 + 7}), chunks.end());  // corner: too far
+  // The capture square spans chunks -8..7 on both axes.
+  const auto has = [&](ChunkCoord c) { return std::find(chunks.begin(), chunks.end(), c) != chunks.end(); };
+  EXPECT_TRUE(has(ChunkCoord{-8, -8}));
+  EXPECT_TRUE(has(ChunkCoord{7, 15}));    // starts 224 m above the square's top edge
+  EXPECT_FALSE(has(ChunkCoord{7, 16}));   // starts 256 m above: beyond 250 m
+  EXPECT_FALSE(has(ChunkCoord{14, 14}));  // diagonal gap sqrt(2)*192 = 271 m
 }
 
 TEST(ChunkRegions, DiscKnownAnswer) {

@@ -19,7 +19,7 @@ Config config(int64_t seed) {
 }  // namespace
 
 TEST(Trail, StaysInsideTheCaptureRegionAndStartsAtOrigin) {
-  for (int64_t seed : {1, 2, 3, 42, 9999999999}) {
+  for (int64_t seed : {int64_t{1}, int64_t{2}, int64_t{3}, int64_t{42}, int64_t{9999999999}}) {
     for (double extent : {512.0, 100.0}) {
       Config c = config(seed);
       c.world.extent = extent;
