@@ -21,9 +21,12 @@ run: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-## make bench: the end-to-end benchmark harness (writes bench/results/)
-bench: build
-	$(SILVA) bench
+## make bench: the end-to-end benchmark harness, ~20 min on 2 cores (writes bench/results/<date>-<cpu>.json,
+## a markdown report and charts; see bench/README.md). BENCH_ARGS=--quick for the ~3-minute subset.
+bench:
+	@bash scripts/install-deps.sh --bench
+	@$(MAKE) --no-print-directory build
+	$(SILVA) bench $(BENCH_ARGS)
 
 ## make sanitize: ASan + UBSan build running every test
 sanitize: deps

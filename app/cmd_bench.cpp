@@ -13,10 +13,13 @@ Handler add_bench_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "bench",
       "Run the end-to-end benchmarks that reproduce the thesis tables on this machine and write "
-      "bench/results/*.json (fixed seeds; cold and warm runs; 1 and 2 threads).");
-  cmd->add_flag("--quick", request->quick, "a short subset (minutes instead of ~20)");
+      "bench/results/<date>-<cpu>.json and a markdown report with charts; thesis Tables 5.1-5.9, the "
+      "690-set autopilot and thread scaling 1..nproc, compared with the previous results.");
+  cmd->add_flag("--quick", request->quick, "a short subset (about 3 minutes on 2 cores instead of about 20)");
+  cmd->add_option("--out", request->out_dir, "results folder (default: bench/results of the source tree)")
+      ->type_name("DIR");
   add_output_flags(*cmd, *output);
-  cmd->footer("Examples:\n  silva bench --quick\n  silva bench --json > results.json");
+  cmd->footer("Examples:\n  silva bench --quick\n  silva bench --json > summary.json\n  silva bench --quick --out /tmp/bench");
   return [request, output] { return run_bench(*request, Reporter(*output)); };
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 /// @file What each subcommand asks of the pipeline, after the CLI has checked every input.
-/// The run_* functions are the pipeline entry points (lead engineer); app/commands_pending.cpp
-/// holds placeholders that fail with "not implemented yet: <command>" (exit 1).
+/// The run_* functions are the pipeline entry points (app/run_*.cpp, app/bench_run.cpp,
+/// app/profile_run.cpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/config_loader.hpp"
 #include "app/reporter.hpp"
@@ -39,6 +40,7 @@ struct WorldRequest {
   std::optional<Disc> region;       ///< nullopt: the default world (CONTRACT.md).
   std::filesystem::path export_path;  ///< --export FILE.glb ("" = no export).
   bool instancing = false;          ///< --instancing: EXT_mesh_gpu_instancing in the export.
+  std::filesystem::path map_path;   ///< --map FILE.png: top-down class map ("" = none).
   bool stats = false;               ///< --stats: print counts and timings.
 };
 
@@ -54,15 +56,20 @@ struct MergeRequest {
 
 /// `silva bench`: the end-to-end benchmark harness.
 struct BenchRequest {
-  bool quick = false;  ///< --quick: a short subset.
+  bool quick = false;                 ///< --quick: a short subset.
+  std::filesystem::path out_dir;      ///< --out DIR ("" = bench/results of the source tree).
 };
 
-/// `silva profile placement`: time placement + resolve on a world.
+/// `silva profile placement`: a density (x elevation x trail) sweep over seeds, profiled per class.
 struct ProfilePlacementRequest {
-  LoadedConfig config;              ///< Checked, seed resolved.
+  LoadedConfig config;              ///< Checked base config; its seed is the sweep's first seed.
   int threads = 1;                  ///< Resolved thread count.
   std::optional<double> radius;     ///< --radius R around the origin (nullopt = the default world).
-  int repeats = 3;                  ///< --repeat N: warm runs after the cold one.
+  std::vector<double> densities;    ///< --densities: vegetation.density values (%), each 1..25.
+  int seeds = 3;                    ///< --seeds N: seeds seed, seed+1, ..., seed+N-1.
+  std::vector<double> elevations;   ///< --elevations: terrain.max_elevation values (m), each 0..50.
+  std::vector<bool> trails;         ///< --trail on,off: trail.enabled values.
+  std::filesystem::path out_dir;    ///< --out DIR: placement.json, placement.csv, heatmaps, charts.
 };
 
 /// Runs the generate pipeline; returns the exit code. Throws InputError / IoError.
@@ -73,9 +80,9 @@ int run_world(const WorldRequest& request, const Reporter& reporter);
 int run_assets_build(const AssetsBuildRequest& request, const Reporter& reporter);
 /// Merges shards of a run; returns the exit code. Throws InputError / IoError.
 int run_merge(const MergeRequest& request, const Reporter& reporter);
-/// Runs the benchmark harness; returns the exit code.
+/// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
 int run_bench(const BenchRequest& request, const Reporter& reporter);
-/// Profiles placement; returns the exit code.
+/// Profiles placement over a sweep; returns the exit code. Throws InputError / IoError.
 int run_profile_placement(const ProfilePlacementRequest& request, const Reporter& reporter);
 
 }  // namespace silva::app

@@ -1,0 +1,32 @@
+#include "app/bench_charts.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+
+#include "app/data_path.hpp"
+
+namespace silva::app {
+
+std::string shell_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+int run_shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return status == -1 || !WIFEXITED(status) ? -1 : WEXITSTATUS(status);
+}
+
+ChartRun draw_charts(const std::filesystem::path& results_json) {
+  const std::filesystem::path script = data_path("scripts/bench_charts.py");
+  const std::string command = "python3 " + shell_quote(script.string()) + " " + shell_quote(results_json.string());
+  if (run_shell("python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") != 0)
+    return {false, "python3 with matplotlib and numpy not found; draw the charts later with: " + command +
+                       " (Debian: apt-get install python3-matplotlib python3-numpy)"};
+  if (run_shell(command + " 1>&2") != 0) return {false, "the chart script failed; rerun: " + command};
+  return {true, "charts drawn by " + script.string()};
+}
+
+}  // namespace silva::app

@@ -1,0 +1,103 @@
+// `silva bench`: measure, compare with the previous results, write JSON + markdown + charts.
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "app/bench_charts.hpp"
+#include "app/bench_compare.hpp"
+#include "app/bench_peers.hpp"
+#include "app/bench_report.hpp"
+#include "app/bench_suite.hpp"
+#include "app/commands.hpp"
+#include "app/data_path.hpp"
+#include "app/output_check.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace silva::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Removes a folder when it goes out of scope.
+struct ScratchFolder {
+  fs::path path;
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+/// Reads a JSON file (null when unreadable).
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+/// Silva/thesis of a figure, or null.
+nlohmann::json ratio_of(const nlohmann::json& results, const std::string& table, const std::string& x) {
+  for (const auto& f : results["figures"])
+    if (f["table"] == table && (x.empty() || f["x"] == x)) return f["ratio"];
+  return nullptr;
+}
+
+}  // namespace
+
+int run_bench(const BenchRequest& request, const Reporter& reporter) {
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  const BenchPlan plan = request.quick ? quick_plan(cores) : full_plan(cores);
+  const fs::path dir = request.out_dir.empty() ? data_path("bench/results") : request.out_dir;
+  check_writable_dir(dir);
+  ThesisTables thesis = ThesisTables::load(data_path("bench/thesis-tables.json"));
+  const ScratchFolder scratch{fs::temp_directory_path() / ("silva-bench-" + std::to_string(getpid()))};
+
+  reporter.note("silva bench (" + plan.kind + "): results go to " + dir.string());
+  const auto t0 = std::chrono::steady_clock::now();
+  const BenchContext ctx = make_bench_context(plan, std::move(thesis), scratch.path, reporter, cores);
+  nlohmann::json results = run_bench_suite(ctx, seconds_since(t0));
+  results["peers"] = run_peers_bench(peers_bench_path());
+  reporter.note(results["peers"].value("ran", false) ? "peers_bench ran" : results["peers"]["note"].get<std::string>());
+
+  const std::string stem = results["created_utc"].get<std::string>().substr(0, 10) + "-" +
+                           results["cpu_slug"].get<std::string>() + (plan.kind == "full" ? "" : "-" + plan.kind);
+  const auto previous = previous_results(dir, plan.kind, results["cpu_slug"]);
+  const std::vector<Regression> regressions = previous ? compare_results(read_json(*previous), results)
+                                                       : std::vector<Regression>{};
+  results["compared_with"] = previous ? previous->filename().string() : "";
+  results["regressions"] = nlohmann::json::array();
+  for (const Regression& r : regressions)
+    results["regressions"].push_back(
+        {{"table", r.table}, {"x", r.x}, {"before_s", r.before_s}, {"after_s", r.after_s}, {"change", r.change}});
+
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const fs::path json_path = dir / (stem + ".json"), md_path = dir / (stem + ".md");
+  io::write_file_atomic(json_path, results.dump(2) + "\n");
+  const ChartRun charts = draw_charts(json_path);
+  reporter.note(charts.note);
+  io::write_file_atomic(md_path, bench_markdown(results, results["compared_with"], regressions, dir, stem));
+
+  const nlohmann::json summary = {{"ok", true},
+                                  {"kind", plan.kind},
+                                  {"results_json", json_path.string()},
+                                  {"report_md", md_path.string()},
+                                  {"charts_drawn", charts.drawn},
+                                  {"wall_s", seconds_since(t0)},
+                                  {"figures", results["figures"].size()},
+                                  {"compared_with", results["compared_with"]},
+                                  {"regressions", results["regressions"]},
+                                  {"headline_ratios",
+                                   {{"generation_default_world", ratio_of(results, "5.1", "5")},
+                                    {"capture_set_1920x1080", ratio_of(results, "5.6", "1920x1080")},
+                                    {"autopilot", ratio_of(results, "autopilot", "")}}}};
+  std::string text = "wrote " + json_path.string() + " and " + md_path.string() + " (" +
+                     std::to_string(regressions.size()) + " figure(s) 10 % or more slower than " +
+                     (previous ? previous->filename().string() : std::string("nothing: no earlier results")) + ")";
+  reporter.result(summary, text);
+  return 0;
+}
+
+}  // namespace silva::app

@@ -1,0 +1,128 @@
+#include "app/bench_suite.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "app/bench_machine.hpp"
+#include "app/bench_report.hpp"
+#include "silva_process.hpp"
+
+namespace silva::app {
+namespace {
+
+/// A tiny sweep (128 m world, 64x48 frames, 1-2 frames a point) that still measures every table.
+BenchPlan tiny_plan() {
+  BenchPlan p = quick_plan(2);
+  p.kind = "test";
+  p.overrides = {"world.extent=128", "world.render_distance=32", "trail.control_points=6", "camera.far=40",
+                 "output.resolution=64x48", "captures.autopilot_points=4"};
+  p.frames_per_point = 1;
+  p.captures_max = 2;
+  p.autopilot_frames = 6;
+  p.scaling_frames = 3;
+  p.threads = {1, 2};
+  return p;
+}
+
+/// The results of the tiny sweep (run once for every test of this file).
+const nlohmann::json& tiny_results() {
+  static const nlohmann::json doc = [] {
+    const Reporter quiet(OutputFlags{false, true});
+    const auto scratch = std::filesystem::temp_directory_path() / ("silva-bench-test-" + std::to_string(getpid()));
+    const BenchContext ctx = make_bench_context(
+        tiny_plan(), ThesisTables::load(std::string(SILVA_SOURCE_DIR) + "/bench/thesis-tables.json"), scratch, quiet, 2);
+    nlohmann::json out = run_bench_suite(ctx, 0.0);
+    EXPECT_FALSE(std::filesystem::exists(scratch) && !std::filesystem::is_empty(scratch)) << "capture output left behind";
+    std::filesystem::remove_all(scratch);
+    return out;
+  }();
+  return doc;
+}
+
+TEST(BenchSuite, EveryThesisTableAndEveryThesisXIsMeasured) {
+  const auto& doc = tiny_results();
+  const ThesisTables thesis = ThesisTables::load(std::string(SILVA_SOURCE_DIR) + "/bench/thesis-tables.json");
+  for (const char* table : {"5.1", "5.2", "5.3", "5.4", "5.4b", "5.5", "5.6", "5.7", "5.8", "5.9", "autopilot"}) {
+    EXPECT_TRUE(doc["tables"].contains(table)) << table;
+    std::set<std::string> xs;
+    for (const auto& f : doc["figures"])
+      if (f["table"] == table) xs.insert(f["x"].get<std::string>());
+    if (std::string(table) == "autopilot") {
+      EXPECT_EQ(xs, std::set<std::string>{"12"}) << "4 points x 3 yaws";
+    } else {
+      const auto want = thesis.xs(table);
+      EXPECT_EQ(xs, std::set<std::string>(want.begin(), want.end())) << table;
+    }
+  }
+}
+
+TEST(BenchSuite, EveryFigureHasWorkCountsAndAThesisRatio) {
+  for (const auto& f : tiny_results()["figures"]) {
+    const std::string table = f["table"];
+    const auto& w = f["work"];
+    SCOPED_TRACE(table + " x=" + f["x"].get<std::string>());
+    EXPECT_GT(w["objects"].get<uint64_t>(), 0u);
+    EXPECT_GT(w["chunks"].get<uint64_t>(), 0u);
+    EXPECT_GT(w["triangles"].get<uint64_t>(), 0u);
+    const bool generation = table.rfind("5.", 0) == 0 && table < "5.5";
+    if (generation || table == "threads-generation") {
+      EXPECT_EQ(w["frames"].get<uint64_t>(), 0u);
+    } else {
+      EXPECT_GT(w["frames"].get<uint64_t>(), 0u);
+      EXPECT_EQ(w["pixels"].get<uint64_t>() % w["frames"].get<uint64_t>(), 0u);
+      EXPECT_GT(w["bytes"].get<uint64_t>(), 0u);
+    }
+    if (table.rfind("threads", 0) == 0) {
+      EXPECT_TRUE(f["ratio"].is_null());
+    } else {
+      ASSERT_FALSE(f["thesis_s"].is_null());
+      EXPECT_NEAR(f["ratio"].get<double>(), f["silva_s"].get<double>() / f["thesis_s"].get<double>(), 1e-12);
+    }
+    if (table != "5.9") EXPECT_GT(f["silva_s"].get<double>(), 0.0);
+  }
+}
+
+TEST(BenchSuite, LargerRunsThanMeasuredAreMarkedExtrapolated) {
+  for (const auto& f : tiny_results()["figures"]) {
+    if (f["table"] == "5.7") EXPECT_EQ(f["extrapolated"].get<bool>(), std::stoi(f["x"].get<std::string>()) > 2) << f["x"];
+    if (f["table"] == "autopilot") EXPECT_TRUE(f["extrapolated"].get<bool>());
+    if (f["table"] == "5.1") EXPECT_FALSE(f["extrapolated"].get<bool>());
+  }
+}
+
+TEST(BenchSuite, GenerationWorkGrowsWithDensityAndDropsWithoutGround) {
+  std::map<std::string, uint64_t> objects;
+  for (const auto& f : tiny_results()["figures"]) objects[f["table"].get<std::string>() + "/" + f["x"].get<std::string>()] = f["work"]["objects"];
+  EXPECT_LT(objects["5.1/1"], objects["5.1/25"]);
+  EXPECT_LT(objects["5.4b/false"], objects["5.1/5"]);
+  EXPECT_EQ(objects["5.3/day"], objects["5.3/night"]) << "the world does not depend on the time of day";
+}
+
+TEST(BenchSuite, ReportHasEveryTableAndTheMachine) {
+  const auto& doc = tiny_results();
+  const std::string md = bench_markdown(doc, "", {}, test::fresh_test_dir(), "x");
+  for (const char* table : {"5.1", "5.2", "5.3", "5.4", "5.4b", "5.5", "5.6", "5.7", "5.8", "5.9"})
+    EXPECT_NE(md.find(std::string("## Table ") + table + " "), std::string::npos) << table;
+  EXPECT_NE(md.find("## Thread scaling"), std::string::npos);
+  EXPECT_NE(md.find(doc["machine"]["cpu"].get<std::string>()), std::string::npos);
+  EXPECT_NE(md.find("No earlier results"), std::string::npos);
+  const std::string flagged = bench_markdown(doc, "old.json", {{"5.1", "5", 1.0, 1.2, 0.2}}, test::fresh_test_dir(), "x");
+  EXPECT_NE(flagged.find("| 5.1 | 5 | 1.00 | 1.20 | +20.0 % |"), std::string::npos);
+}
+
+TEST(BenchMachine, CpuSlugIsFileNameSafe) {
+  EXPECT_EQ(cpu_slug("AMD EPYC 7B13 64-Core Processor"), "amd-epyc-7b13-64-core");
+  EXPECT_EQ(cpu_slug("Intel(R) Xeon(R) CPU @ 2.20GHz"), "intel-xeon-2.20ghz");
+  EXPECT_EQ(cpu_slug(""), "unknown-cpu");
+}
+
+TEST(BenchPlan, ScalingThreadsEndAtTheCoreCount) {
+  EXPECT_EQ(scaling_threads(1), std::vector<int>({1}));
+  EXPECT_EQ(scaling_threads(2), std::vector<int>({1, 2}));
+  EXPECT_EQ(scaling_threads(16), std::vector<int>({1, 2, 3, 4, 8, 16}));
+  EXPECT_EQ(scaling_threads(6), std::vector<int>({1, 2, 3, 4, 6}));
+}
+
+}  // namespace
+}  // namespace silva::app
