@@ -16,6 +16,8 @@ build: deps
 ## make run: build Release and generate the demo dataset of configs/demo.toml into ./out/
 run: build
 	$(SILVA) generate --config configs/demo.toml --overwrite
+	@echo "The demo dataset is in out/1234567890/ (rgb/, semantic/, depth/, ... per sequence; see README.md)."
+	@echo "The full thesis default is '$(SILVA) generate': 790 captures at 1920x1080, several GB."
 
 ## make test: build and run every test
 test: build
@@ -34,10 +36,11 @@ sanitize: deps
 	@cmake --build build-sanitize -j $(JOBS)
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)
 
-## make tidy: clang-tidy over every project source file
+## make tidy: clang-tidy (checks in .clang-tidy) over the library and app sources; configures
+## its own folder (no compile needed, only compile_commands.json)
 tidy: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
-	bash scripts/tidy.sh $(BUILD)
+	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_BENCH=OFF >/dev/null
+	bash scripts/tidy.sh build-tidy $(JOBS)
 
 ## make test-slurm: a throw-away single-node Slurm cluster here (root or sudo); checks that a
 ## 2-shard job array + silva merge equals a single-process run byte for byte
@@ -45,4 +48,4 @@ test-slurm: build
 	SILVA=$(SILVA) bash scripts/test-slurm.sh
 
 clean:
-	rm -rf $(BUILD) build-sanitize
+	rm -rf $(BUILD) build-sanitize build-tidy
