@@ -31,18 +31,46 @@ void write_miss(GBuffer& g, size_t i) {
   g.variation[i] = 0;
 }
 
+/// World-space data of one (instance, triangle) pair, prepared once per run of pixels that share it.
+struct HitTriangle {
+  uint32_t instance = kNoInstance, triangle = 0;  ///< Which triangle this is (kNoInstance: none yet).
+  const Instance* inst = nullptr;                 ///< Its instance.
+  const Mesh* mesh = nullptr;                     ///< The LOD drawn.
+  const uint32_t* idx = nullptr;                  ///< Its three vertex indices.
+  const MeshPart* part = nullptr;                 ///< Its part (role, material).
+  Vec3d p[3];                                     ///< World-space vertices.
+  Vec3d e1, e2;                                   ///< Edges p1 - p0 and p2 - p0.
+  Mat3d cof;                                      ///< Normal transform (cofactor of the linear part).
+
+  /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`.
+  void prepare(const Scene& scene, uint32_t instance_index, uint32_t lod, uint32_t triangle_index) {
+    instance = instance_index;
+    triangle = triangle_index;
+    inst = &scene.instances[instance_index];
+    mesh = scene.meshes[inst->mesh].lods[lod];
+    const Eigen::Matrix<double, 3, 4> m = inst->object_to_world.cast<double>();
+    idx = &mesh->indices[size_t(triangle_index) * 3];
+    for (int k = 0; k < 3; ++k) p[k] = m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3);
+    e1 = p[1] - p[0];
+    e2 = p[2] - p[0];
+    const Mat3d lin = m.leftCols<3>();
+    cof.col(0) = lin.col(1).cross(lin.col(2));
+    cof.col(1) = lin.col(2).cross(lin.col(0));
+    cof.col(2) = lin.col(0).cross(lin.col(1));
+    if (lin.determinant() < 0.0) cof = -cof;
+    part = &part_of(*mesh, triangle_index);
+  }
+};
+
 /// Re-intersects pixel (u, v)'s centre ray with its triangle and writes the surface.
-void write_hit(const Scene& scene, const Camera& cam, uint32_t instance, uint32_t lod, uint32_t triangle, int u, int v,
-               GBuffer& g, size_t i) {
-  const Instance& inst = scene.instances[instance];
-  const Mesh& mesh = *scene.meshes[inst.mesh].lods[lod];
-  const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
-  const uint32_t* idx = &mesh.indices[size_t(triangle) * 3];
-  Vec3d p[3];
-  for (int k = 0; k < 3; ++k) p[k] = m.leftCols<3>() * mesh.positions[idx[k]].cast<double>() + m.col(3);
+void write_hit(const Camera& cam, const HitTriangle& h, int u, int v, GBuffer& g, size_t i) {
+  const Vec3d* p = h.p;
+  const Vec3d& e1 = h.e1;
+  const Vec3d& e2 = h.e2;
+  const Mesh& mesh = *h.mesh;
+  const uint32_t* idx = h.idx;
   const Vec3d origin = cam.position();
   const Vec3d dir = cam.ray_direction(u, v);  // camera z component 1: t is metric z
-  const Vec3d e1 = p[1] - p[0], e2 = p[2] - p[0];
   const Vec3d pvec = dir.cross(e2);
   const double det = e1.dot(pvec);
   double b1 = 1.0 / 3.0, b2 = 1.0 / 3.0, t = 0.0;
@@ -61,12 +89,6 @@ void write_hit(const Scene& scene, const Camera& cam, uint32_t instance, uint32_
   const double b0 = 1.0 - b1 - b2;
   const Vec3d hit = origin + t * dir;
   // Normal: interpolated vertex normals through the inverse transpose (cofactor matrix).
-  const Mat3d lin = m.leftCols<3>();
-  Mat3d cof;
-  cof.col(0) = lin.col(1).cross(lin.col(2));
-  cof.col(1) = lin.col(2).cross(lin.col(0));
-  cof.col(2) = lin.col(0).cross(lin.col(1));
-  if (lin.determinant() < 0.0) cof = -cof;
   Vec3d n_obj = e1.cross(e2);  // fallback: geometric normal (already in world space)
   bool object_space = false;
   if (!mesh.normals.empty()) {
@@ -74,7 +96,7 @@ void write_hit(const Scene& scene, const Camera& cam, uint32_t instance, uint32_
             b2 * mesh.normals[idx[2]].cast<double>();
     object_space = true;
   }
-  Vec3d n = object_space ? Vec3d(cof * n_obj) : n_obj;
+  Vec3d n = object_space ? Vec3d(h.cof * n_obj) : n_obj;
   const double len = n.norm();
   n = len > 0.0 ? Vec3d(n / len) : Vec3d(-dir.normalized());
   if (n.dot(dir) > 0.0) n = -n;
@@ -84,15 +106,14 @@ void write_hit(const Scene& scene, const Camera& cam, uint32_t instance, uint32_
                               b2 * mesh.uvs[idx[2]].cast<double>();
     uv = w.cast<float>();
   }
-  const MeshPart& part = part_of(mesh, triangle);
   g.depth[i] = float(t);
   g.position[i] = hit.cast<float>();
   g.normal[i] = n.cast<float>();
   g.uv[i] = uv;
-  g.role[i] = part.role;
-  g.material[i] = part.material;
-  g.instance_id[i] = inst.instance_id;
-  g.variation[i] = inst.variation;
+  g.role[i] = h.part->role;
+  g.material[i] = h.part->material;
+  g.instance_id[i] = h.inst->instance_id;
+  g.variation[i] = h.inst->variation;
 }
 
 }  // namespace
@@ -102,6 +123,7 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
   if (out.width != vis.width || out.height != vis.height || out.depth.size() != vis.size())
     out.resize(vis.width, vis.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, vis.height, 8), [&](const tbb::blocked_range<int>& rows) {
+    HitTriangle h;
     for (int v = rows.begin(); v != rows.end(); ++v) {
       for (int u = 0; u < vis.width; ++u) {
         const size_t i = size_t(v) * size_t(vis.width) + size_t(u);
@@ -109,7 +131,9 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
         if (inst == kNoInstance) {
           write_miss(out, i);
         } else {
-          write_hit(scene, camera, inst, instance_lod[inst], vis.triangle[i], u, v, out, i);
+          if (inst != h.instance || vis.triangle[i] != h.triangle)
+            h.prepare(scene, inst, instance_lod[inst], vis.triangle[i]);
+          write_hit(camera, h, u, v, out, i);
         }
       }
     }

@@ -1,6 +1,9 @@
 #include "render/shade.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -17,9 +20,47 @@ namespace silva::render {
 
 namespace {
 
+/// Relative depth difference above which a half-resolution AO sample is not reused for a pixel.
+constexpr float kAoReuseDepth = 0.05f;
+
+/// Screen-space AO evaluated at the even pixels (2x, 2y) only (-1 where that pixel saw the sky).
+struct HalfResAo {
+  int width = 0, height = 0;  ///< Half-resolution size (rounded up).
+  std::vector<float> ao;      ///< Row-major, width * height.
+
+  /// Evaluates the samples in parallel rows.
+  HalfResAo(const GBuffer& g, const Camera& camera) : width((g.width + 1) / 2), height((g.height + 1) / 2) {
+    ao.resize(size_t(width) * size_t(height));
+    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < width; ++x) {
+          const size_t i = size_t(2 * y) * size_t(g.width) + size_t(2 * x);
+          ao[size_t(y) * size_t(width) + size_t(x)] = g.depth[i] == 0.0f ? -1.0f : screen_space_ao(g, camera, 2 * x, 2 * y);
+        }
+    });
+  }
+
+  /// AO of full-resolution pixel (u, v): the sample of the nearest of the (up to 4) surrounding even
+  /// pixels whose depth is within kAoReuseDepth of the pixel's, else evaluated for the pixel itself.
+  float at(const GBuffer& g, const Camera& camera, int u, int v) const {
+    const float depth = g.depth[size_t(v) * size_t(g.width) + size_t(u)];
+    const int hx = u / 2, hy = v / 2;
+    const int nx = std::min(hx + (u & 1), width - 1), ny = std::min(hy + (v & 1), height - 1);
+    const float limit = kAoReuseDepth * depth;
+    float best = -1.0f, best_diff = 0.0f;
+    for (const auto& [x, y] : {std::pair{hx, hy}, std::pair{nx, hy}, std::pair{hx, ny}, std::pair{nx, ny}}) {
+      const float a = ao[size_t(y) * size_t(width) + size_t(x)];
+      if (a < 0.0f) continue;
+      const float diff = std::abs(g.depth[size_t(2 * y) * size_t(g.width) + size_t(2 * x)] - depth);
+      if (diff <= limit && (best < 0.0f || diff < best_diff)) best = a, best_diff = diff;
+    }
+    return best >= 0.0f ? best : screen_space_ao(g, camera, u, v);
+  }
+};
+
 /// Linear radiance arriving at a visible surface pixel, fog included.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, int u, int v,
-                       const Vec3f& view_dir) {
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int u,
+                       int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
@@ -32,7 +73,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
     const float visible = in.shadow ? shadow_visibility(*in.shadow, s.position, s.normal, sky.to_sun) : 1.0f;
     light = sky.sun_radiance * (sun_facing * visible);
   }
-  const float ao = screen_space_ao(g, in.camera, u, v);
+  const float ao = half_ao.at(g, in.camera, u, v);
   light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
   return fog.apply(albedo.cwiseProduct(light), s.position, view_dir);
 }
@@ -57,12 +98,13 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const HeightFog fog(in.preset, sky, in.camera.position().cast<float>());
   const float exposure = exposure_scale(in.preset.exposure_ev);
   const uint64_t key = grain_key(in.sequence, in.frame);
+  const HalfResAo half_ao(g, in.camera);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     for (int v = rows.begin(); v < rows.end(); ++v) {
       for (int u = 0; u < g.width; ++u) {
         const size_t i = size_t(v) * size_t(g.width) + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        const Vec3f radiance = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, u, v, dir);
+        const Vec3f radiance = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, half_ao, u, v, dir);
         encode_pixel(in, exposure, key, i, radiance, &rgb_out[i * 3]);
       }
     }

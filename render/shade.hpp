@@ -23,7 +23,8 @@ struct ShadeInputs {
 };
 
 /// Shades every pixel: procedural material albedo lit by the sun (shadow-mapped, back-lit foliage
-/// translucency) and the sky/ground hemisphere (screen-space AO), through exponential height
+/// translucency) and the sky/ground hemisphere (screen-space AO at half resolution, reused
+/// only across pixels of similar depth), through exponential height
 /// fog; sky pixels get the analytic sky. Then exposure, ACES tone mapping, film grain, sRGB.
 /// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
 /// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.

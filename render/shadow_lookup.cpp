@@ -25,19 +25,28 @@ float shadow_visibility(const ShadowMap& map, const Vec3f& position, const Vec3f
   const double gx = std::clamp(-nl.x() / nz, -kMaxSlope, kMaxSlope);
   const double gy = std::clamp(-nl.y() / nz, -kMaxSlope, kMaxSlope);
   const double base = l.z() - (0.5 * texel + kConstantBias);
-  const int tx = int(fx), ty = int(fy);
-  int lit = 0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    const int y = std::clamp(ty + dy, 0, map.height - 1);
+  // Tent filter: 3x3 bilinear PCF taps = 4x4 texels with weights (1 - a, 1, 1, a) per axis, so the
+  // result varies continuously with the position (no texel-sized steps near the camera).
+  const double sx = fx - 0.5, sy = fy - 0.5;
+  const double fx0 = std::floor(sx), fy0 = std::floor(sy);
+  const float ax = float(sx - fx0), ay = float(sy - fy0);
+  const float wx[4] = {1.0f - ax, 1.0f, 1.0f, ax}, wy[4] = {1.0f - ay, 1.0f, 1.0f, ay};
+  const int tx = int(fx0) - 1, ty = int(fy0) - 1;
+  float lit = 0.0f, dark = 0.0f;
+  for (int j = 0; j < 4; ++j) {
+    const int y = std::clamp(ty + j, 0, map.height - 1);
     const double oy = (double(y) + 0.5 - fy) * texel;
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int x = std::clamp(tx + dx, 0, map.width - 1);
+    float row_lit = 0.0f, row_dark = 0.0f;
+    for (int i = 0; i < 4; ++i) {
+      const int x = std::clamp(tx + i, 0, map.width - 1);
       const double ox = (double(x) + 0.5 - fx) * texel;
       const double receiver = base + gx * ox + gy * oy;
-      lit += float(receiver) <= map.depth[size_t(y) * size_t(map.width) + size_t(x)] ? 1 : 0;
+      (float(receiver) <= map.depth[size_t(y) * size_t(map.width) + size_t(x)] ? row_lit : row_dark) += wx[i];
     }
+    lit += row_lit * wy[j];
+    dark += row_dark * wy[j];
   }
-  return float(lit) * (1.0f / 9.0f);
+  return lit / (lit + dark);  // exactly 1 when no tap is shadowed, 0 when every weighted tap is
 }
 
 }  // namespace silva::render
