@@ -1,10 +1,11 @@
 #pragma once
-/// @file A terrain chunk and its generated content (terrain mesh, trail piece, objects, stats).
+/// @file A terrain chunk: its generated content and the components of a chunk entity
+/// (Stream -> Generate -> Place -> Resolve, DESIGN.md "Phases").
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
+#include "components/candidate.hpp"
 #include "components/vegetation.hpp"
 #include "core/mesh.hpp"
 #include "core/ontology.hpp"
@@ -37,11 +38,35 @@ struct ChunkContent {
   ChunkStats stats;                 ///< Counters and timings.
 };
 
-/// Chunk entity component: its coordinates and (once generated) its immutable content.
+/// Chunk entity identity: its coordinates and whether it is only a halo (neighbour
+/// candidates for resolving the chunks next to it: no terrain, no objects of its own).
 struct Chunk {
-  ChunkCoord coord;                              ///< Chunk (i, j).
-  std::shared_ptr<const ChunkContent> content;   ///< Null until generated.
-  uint64_t last_used_frame = 0;                  ///< Frame that last needed it (LRU).
+  ChunkCoord coord;   ///< Chunk (i, j).
+  bool halo = false;  ///< True while the chunk only supplies neighbour candidates.
+};
+
+/// Generate phase output: the chunk's terrain and trail meshes.
+struct ChunkTerrain {
+  Mesh terrain;          ///< Terrain mesh in world coordinates (role Ground).
+  Mesh trail;            ///< Trail piece in world coordinates (empty if none crosses).
+  double generate_s = 0; ///< Time spent building both meshes.
+  bool ready = false;    ///< True once generated.
+};
+
+/// Place phase output: the chunk's pre-resolve candidates.
+struct ChunkPlacement {
+  world::ChunkCandidates candidates;  ///< Solids, and ground vegetation once with_ground.
+  double place_s = 0;                 ///< Time spent placing.
+  bool placed = false;                ///< True once placed.
+  bool with_ground = false;           ///< True when the ground vegetation was placed too.
+};
+
+/// Resolve phase output: the chunk's final objects (also spawned as Vegetation entities).
+struct ChunkObjects {
+  std::vector<Vegetation> objects;  ///< Final objects in (grid point, sub) order, ids assigned.
+  ChunkStats stats;                 ///< Counters and timings (place, generate, resolve).
+  bool resolved = false;            ///< True once resolved.
+  bool populated = false;           ///< True once its Vegetation entities are spawned.
 };
 
 }  // namespace silva

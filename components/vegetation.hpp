@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "core/ontology.hpp"
+#include "ecs/entity.hpp"
 #include "core/types.hpp"
 
 namespace silva {
@@ -20,6 +21,11 @@ struct Vegetation {
   float yaw = 0;               ///< Rotation about +Z, radians.
   float scale = 1;             ///< Uniform scale.
   uint32_t instance_id = 0;    ///< Packed instance id (0 for ground vegetation: stuff).
+};
+
+/// Vegetation entity component: the chunk entity the object belongs to (despawned with it).
+struct VegetationOf {
+  ecs::Entity chunk;  ///< Owning chunk entity.
 };
 
 }  // namespace silva

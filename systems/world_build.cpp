@@ -1,15 +1,17 @@
 #include "systems/world_build.hpp"
 
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <xxhash.h>
 
 #include <algorithm>
 #include <chrono>
-#include <map>
+#include <string>
+#include <utility>
 
+#include "ecs/world.hpp"
 #include "systems/chunk_regions.hpp"
 #include "systems/world_generator.hpp"
+#include "systems/world_systems.hpp"
 
 namespace silva::world {
 
@@ -83,6 +85,13 @@ void accumulate(WorldTotals& t, const ChunkStats& s) {
   t.resolve_cpu_s += s.resolve_s;
 }
 
+/// Seconds of the latest call of system `name`.
+double last_seconds(const ecs::World& world, const std::string& name) {
+  for (const ecs::SystemStats& st : world.system_stats())
+    if (st.name == name) return double(st.last_ns) * 1e-9;
+  return 0;
+}
+
 }  // namespace
 
 uint64_t world_hash(const std::vector<ChunkContent>& chunks) {
@@ -95,31 +104,22 @@ World build_world(const WorldContext& ctx, std::vector<ChunkCoord> coords, int t
   const auto t0 = Clock::now();
   std::sort(coords.begin(), coords.end());
   coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
-  // Candidate table: the chunks themselves (with ground vegetation) and their rings (solids only).
-  std::map<ChunkCoord, ChunkCandidates> table;
-  std::map<ChunkCoord, bool> with_ground;
-  const int ring = ctx.neighbour_ring;
-  for (ChunkCoord c : coords) {
-    with_ground[c] = true;
-    for (int dj = -ring; dj <= ring; ++dj)
-      for (int di = -ring; di <= ring; ++di) with_ground.emplace(ChunkCoord{c.i + di, c.j + dj}, false);
-  }
-  std::vector<std::pair<ChunkCoord, bool>> jobs(with_ground.begin(), with_ground.end());
-  std::vector<ChunkCandidates*> slots;
-  for (const auto& [c, g] : jobs) slots.push_back(&table[c]);
-  World w;
-  w.chunks.resize(coords.size());
+  ecs::World ecs;
+  StreamSettings settings = default_stream_settings(ctx);
+  settings.pinned = coords;
+  install_world_systems(ecs, ctx, std::move(settings));
   tbb::task_arena arena(std::max(1, threads));
-  arena.execute([&] {
-    tbb::parallel_for(size_t(0), jobs.size(),
-                      [&](size_t k) { *slots[k] = place_candidates(ctx, jobs[k].first, jobs[k].second); });
-    w.totals.place_s = since(t0);
-    const auto t1 = Clock::now();
-    const CandidateLookup lookup = [&](ChunkCoord c) -> const ChunkCandidates& { return table.at(c); };
-    tbb::parallel_for(size_t(0), coords.size(),
-                      [&](size_t k) { w.chunks[k] = generate_chunk(ctx, coords[k], table.at(coords[k]), lookup); });
-    w.totals.chunks_s = since(t1);
-  });
+  arena.execute([&] { ecs.run_frame(); });
+  World w;
+  w.totals.place_s = last_seconds(ecs, "place");
+  w.totals.chunks_s = last_seconds(ecs, "generate") + last_seconds(ecs, "resolve");
+  w.chunks.reserve(coords.size());
+  ecs.view<const Chunk, ChunkTerrain, ChunkObjects>().each(
+      [&](const Chunk& c, ChunkTerrain& t, ChunkObjects& o) {
+        if (!c.halo) w.chunks.push_back(assemble_chunk(c.coord, std::move(t), std::move(o)));
+      });
+  std::sort(w.chunks.begin(), w.chunks.end(),
+            [](const ChunkContent& a, const ChunkContent& b) { return a.coord < b.coord; });
   for (const ChunkContent& c : w.chunks) accumulate(w.totals, c.stats);
   w.hash = world_hash(w.chunks);
   w.totals.total_s = since(t0);

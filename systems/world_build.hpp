@@ -23,8 +23,8 @@ struct WorldTotals {
   uint64_t ground_dropped = 0;                          ///< Grass/ferns removed by solids.
   uint64_t broad_queries = 0;                           ///< Broad-phase queries.
   uint64_t narrow_queries = 0;                          ///< Narrow-phase fcl::collide calls.
-  double place_s = 0;      ///< Wall time of the placement phase (all candidates).
-  double chunks_s = 0;     ///< Wall time of the terrain/trail/resolve phase.
+  double place_s = 0;      ///< Wall time of the Place phase (all candidates).
+  double chunks_s = 0;     ///< Wall time of the Generate (terrain/trail) and Resolve phases.
   double terrain_cpu_s = 0;  ///< Summed per-chunk terrain + trail mesh time.
   double resolve_cpu_s = 0;  ///< Summed per-chunk resolve time.
   double total_s = 0;      ///< Wall time of the whole build.
@@ -37,8 +37,9 @@ struct World {
   uint64_t hash = 0;                 ///< world_hash(chunks).
 };
 
-/// Builds the given chunks (each equal to generate_chunk(ctx, c)) on `threads` TBB threads:
-/// candidates of the chunks and their neighbour rings once, then every chunk in parallel.
+/// Builds the given chunks (each equal to generate_chunk(ctx, c)) on `threads` TBB threads through
+/// the ECS world: the chunks are pinned, one frame runs Stream (chunk entities plus a halo ring of
+/// neighbour candidates), Generate, Place and Resolve in parallel over the chunk entities.
 World build_world(const WorldContext& ctx, std::vector<ChunkCoord> coords, int threads);
 
 /// build_world over default_world_chunks(ctx.config).

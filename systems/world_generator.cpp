@@ -3,6 +3,7 @@
 #include <chrono>
 #include <map>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/instance_id.hpp"
@@ -29,20 +30,25 @@ void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
   }
 }
 
-ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
-                            const CandidateLookup& neighbours) {
-  ChunkContent out;
-  out.coord = coord;
-  auto t0 = std::chrono::steady_clock::now();
+ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ChunkTerrain out;
   out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
   out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
-  out.stats.generate_s = since(t0);
-  t0 = std::chrono::steady_clock::now();
+  out.generate_s = since(t0);
+  out.ready = true;
+  return out;
+}
+
+ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                             const CandidateLookup& neighbours) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ChunkObjects out;
   ResolveStats rs;
   out.objects = resolve_chunk(ctx, coord, own, neighbours, rs);
   assign_instance_ids(coord, out.objects);
-  out.stats.resolve_s = since(t0);
   auto& st = out.stats;
+  st.resolve_s = since(t0);
   for (const Vegetation& v : out.objects) ++st.objects_by_role[size_t(v.role)];
   st.candidates = uint32_t(own.solids.size() + own.ground.size());
   st.trail_rejected = own.trail_rejected;
@@ -51,8 +57,25 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const Chu
   st.ground_dropped = rs.ground_dropped;
   st.broad_queries = rs.broad_queries;
   st.narrow_queries = rs.narrow_queries;
-  st.triangles = out.terrain.triangle_count() + out.trail.triangle_count();
+  out.resolved = true;
   return out;
+}
+
+ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects) {
+  ChunkContent out;
+  out.coord = coord;
+  out.terrain = std::move(terrain.terrain);
+  out.trail = std::move(terrain.trail);
+  out.objects = std::move(objects.objects);
+  out.stats = objects.stats;
+  out.stats.generate_s = terrain.generate_s;
+  out.stats.triangles = out.terrain.triangle_count() + out.trail.triangle_count();
+  return out;
+}
+
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                            const CandidateLookup& neighbours) {
+  return assemble_chunk(coord, generate_terrain(ctx, coord), resolve_objects(ctx, coord, own, neighbours));
 }
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {

@@ -15,6 +15,18 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
                             const CandidateLookup& neighbours);
 
+/// Terrain and trail meshes of chunk `coord` (the Generate phase's work), marked ready.
+ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord);
+
+/// Final objects of chunk `coord` with ids assigned and resolve counters (the Resolve phase's
+/// work); `own` must be place_candidates(ctx, coord, true). Marked resolved.
+ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                             const CandidateLookup& neighbours);
+
+/// The content of a chunk from its phase outputs (meshes and objects are moved out); adds the
+/// triangle count and mesh time to the stats.
+ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects);
+
 /// Assigns packed instance ids to the things (roles with instances) in list order; stuff gets 0.
 /// Throws InputError when a chunk holds more than kMaxObjectsPerChunk things.
 void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects);
