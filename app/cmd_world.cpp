@@ -19,6 +19,7 @@ struct WorldArgs {
   std::optional<std::string> center;
   std::optional<double> radius;
   std::string export_path;
+  std::string map_path;
   bool instancing = false;
   bool stats = false;
   OutputFlags output;
@@ -44,11 +45,17 @@ WorldRequest::Disc parse_center(const std::string& text, double radius) {
   return disc;
 }
 
-/// True when `path` ends in ".glb" (any case).
-bool has_glb_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".glb";
+/// True when `path` ends in `ext` (e.g. ".glb", any case).
+bool has_extension(const std::filesystem::path& path, const std::string& ext) {
+  std::string e = path.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e == ext;
+}
+
+/// Throws IoError unless the folder that will hold `path` is writable.
+void check_parent_writable(const std::filesystem::path& path) {
+  const std::filesystem::path parent = path.parent_path();
+  check_writable_dir(parent.empty() ? std::filesystem::path(".") : parent);
 }
 
 int world(const WorldArgs& args) {
@@ -58,11 +65,17 @@ int world(const WorldArgs& args) {
   if (args.center) request.region = parse_center(*args.center, *args.radius);
   if (!args.export_path.empty()) {
     request.export_path = args.export_path;
-    if (!has_glb_extension(request.export_path)) {
+    if (!has_extension(request.export_path, ".glb")) {
       throw InputError("--export " + args.export_path + ": the export is binary glTF, name it FILE.glb");
     }
-    const std::filesystem::path parent = request.export_path.parent_path();
-    check_writable_dir(parent.empty() ? std::filesystem::path(".") : parent);
+    check_parent_writable(request.export_path);
+  }
+  if (!args.map_path.empty()) {
+    request.map_path = args.map_path;
+    if (!has_extension(request.map_path, ".png")) {
+      throw InputError("--map " + args.map_path + ": the class map is a PNG image, name it FILE.png");
+    }
+    check_parent_writable(request.map_path);
   }
   request.instancing = args.instancing;
   request.stats = args.stats;
@@ -98,12 +111,16 @@ Handler add_world_command(CLI::App& root) {
   cmd->add_flag("--instancing", args->instancing,
                 "export repeated meshes with EXT_mesh_gpu_instancing (very large worlds)")
       ->needs(exported);
+  cmd->add_option("--map", args->map_path,
+                  "write a top-down class map of the world (0.5 m per pixel, ontology colours)")
+      ->type_name("FILE.png");
   cmd->add_flag("--stats", args->stats, "print chunk, object and triangle counts and timings");
   add_output_flags(*cmd, args->output);
   cmd->footer(
       "Examples:\n"
       "  silva world --seed 7 --stats\n"
       "  silva world --seed 7 --center 0,0 --radius 64 --export world.glb\n"
+      "  silva world --seed 7 --map world.png\n"
       "  silva world --config configs/demo.toml --export big.glb --instancing --json");
   return [args] { return world(*args); };
 }

@@ -4,15 +4,21 @@
 #include "app/commands.hpp"
 #include "app/run_setup.hpp"
 #include "assets/build_library.hpp"
+#include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
+#include "io/png_writer.hpp"
 #include "io/ontology_file.hpp"
 #include "systems/chunk_regions.hpp"
+#include "systems/class_map.hpp"
 #include "systems/export_world.hpp"
 #include "systems/world_build.hpp"
 
 namespace silva::app {
 
 namespace {
+/// Ground sample distance of `--map`, metres per pixel.
+constexpr double kMapMetresPerPixel = 0.5;
+
 /// The world's totals as the JSON `--stats` and `--json` print (CONTRACT.md / README).
 nlohmann::json totals_json(const world::World& w, const Ontology& ontology) {
   const world::WorldTotals& t = w.totals;
@@ -55,10 +61,20 @@ int run_world(const WorldRequest& request, const Reporter& reporter) {
     summary["export"] = {{"file", request.export_path.string()},
                          {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count()}};
   }
+  if (!request.map_path.empty()) {
+    const world::ClassMap map =
+        world::render_class_map(w, cfg.terrain.chunk_size, *setup.library, setup.ontology, kMapMetresPerPixel);
+    io::write_file_atomic(request.map_path, io::encode_png_rgb8(map.rgb, map.width, map.height));
+    summary["map"] = {{"file", request.map_path.string()},
+                      {"width", map.width},
+                      {"height", map.height},
+                      {"metres_per_pixel", kMapMetresPerPixel}};
+  }
   std::string text = "built " + std::to_string(w.totals.chunks) + " chunks, " + std::to_string(w.totals.objects) +
                      " objects in " + std::to_string(w.totals.total_s) + " s";
   if (request.stats) text = summary.dump(2);
   if (!request.export_path.empty()) text += "\nexported " + request.export_path.string();
+  if (!request.map_path.empty()) text += "\nwrote class map " + request.map_path.string();
   reporter.result(summary, text);
   return 0;
 }
