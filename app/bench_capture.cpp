@@ -25,6 +25,7 @@ struct CaptureRun {
 /// Captures `frames` of `w` with `types` on `threads` threads into a scratch folder, then deletes it.
 CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::PlannedFrame> frames,
                    const std::vector<std::string>& types, int threads) {
+  stop_if_interrupted();
   static int run_number = 0;
   world::CaptureJob job;
   job.world = &w.world;
@@ -185,20 +186,17 @@ void capture_per_type(const BenchContext& ctx, WarmWorld& w, std::vector<Figure>
 
 }  // namespace
 
-std::vector<Figure> bench_capture(const BenchContext& ctx) {
+void bench_capture(const BenchContext& ctx, std::vector<Figure>& out) {
   std::unique_ptr<WarmWorld> w = warm_world(ctx, ctx.base.config);
   ctx.reporter->note("capture world generated in " + std::to_string(w->build_s) + " s (not part of capture figures)");
-  std::vector<Figure> out;
   capture_vs_density(ctx, *w, out);
   capture_vs_resolution(ctx, *w, out);
   capture_vs_count(ctx, *w, out);
   capture_per_type(ctx, *w, out);
-  return out;
 }
 
-std::vector<Figure> bench_autopilot_and_scaling(const BenchContext& ctx) {
+void bench_autopilot_and_scaling(const BenchContext& ctx, std::vector<Figure>& out) {
   std::unique_ptr<WarmWorld> w = warm_world(ctx, ctx.base.config);
-  std::vector<Figure> out;
   const auto [subset, total] = autopilot_frames(*w, ctx.plan.scaling_frames);
   CaptureRun widest;
   for (int t : ctx.plan.threads) {
@@ -224,7 +222,6 @@ std::vector<Figure> bench_autopilot_and_scaling(const BenchContext& ctx) {
   ap.thesis_s = ctx.thesis.autopilot_estimate_s();
   out.push_back(ap);
   note(ctx, out.back());
-  return out;
 }
 
 }  // namespace silva::app

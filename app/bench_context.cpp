@@ -2,12 +2,17 @@
 
 #include <chrono>
 
+#include "app/interrupt.hpp"
 #include "systems/chunk_regions.hpp"
 
 namespace silva::app {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void stop_if_interrupted() {
+  if (interrupt_requested()) throw Interrupted("bench interrupted");
 }
 
 BenchContext make_bench_context(const BenchPlan& plan, ThesisTables thesis, std::filesystem::path scratch,

@@ -48,6 +48,9 @@ struct WarmWorld {
 /// Builds the variant `cfg` and fills its cache with the default world.
 std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg);
 
+/// Throws Interrupted when Ctrl-C (SIGINT/SIGTERM) asked the harness to stop.
+void stop_if_interrupted();
+
 /// Seconds since `t0`.
 double seconds_since(std::chrono::steady_clock::time_point t0);
 

@@ -74,23 +74,21 @@ Figure measure_point(const BenchContext& ctx, const std::string& table, const st
 
 }  // namespace
 
-std::vector<Figure> bench_generation(const BenchContext& ctx) {
-  std::vector<Figure> figures;
+void bench_generation(const BenchContext& ctx, std::vector<Figure>& out) {
   for (const GenerationPoint& p : generation_points(ctx.thesis)) {
-    figures.push_back(measure_point(ctx, p.table, p.x, bench_variant(ctx, p.sets), ctx.cores));
-    if (p.table == "5.3") figures.back().note = "the world does not depend on the time of day (lighting is applied at capture)";
-    ctx.reporter->note("generation " + p.table + " x=" + p.x + ": " + std::to_string(figures.back().silva_s) + " s");
+    stop_if_interrupted();
+    out.push_back(measure_point(ctx, p.table, p.x, bench_variant(ctx, p.sets), ctx.cores));
+    if (p.table == "5.3") out.back().note = "the world does not depend on the time of day (lighting is applied at capture)";
+    ctx.reporter->note("generation " + p.table + " x=" + p.x + ": " + std::to_string(out.back().silva_s) + " s");
   }
-  return figures;
 }
 
-std::vector<Figure> bench_generation_threads(const BenchContext& ctx) {
-  std::vector<Figure> figures;
+void bench_generation_threads(const BenchContext& ctx, std::vector<Figure>& out) {
   for (int t : ctx.plan.threads) {
-    figures.push_back(measure_point(ctx, "threads-generation", std::to_string(t), ctx.base.config, t));
-    ctx.reporter->note("generation on " + std::to_string(t) + " threads: " + std::to_string(figures.back().silva_s) + " s");
+    stop_if_interrupted();
+    out.push_back(measure_point(ctx, "threads-generation", std::to_string(t), ctx.base.config, t));
+    ctx.reporter->note("generation on " + std::to_string(t) + " threads: " + std::to_string(out.back().silva_s) + " s");
   }
-  return figures;
 }
 
 }  // namespace silva::app

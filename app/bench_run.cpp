@@ -12,6 +12,7 @@
 #include "app/bench_suite.hpp"
 #include "app/commands.hpp"
 #include "app/data_path.hpp"
+#include "app/interrupt.hpp"
 #include "app/output_check.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -54,16 +55,22 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   ThesisTables thesis = ThesisTables::load(data_path("bench/thesis-tables.json"));
   const ScratchFolder scratch{fs::temp_directory_path() / ("silva-bench-" + std::to_string(getpid()))};
 
-  reporter.note("silva bench (" + plan.kind + "): results go to " + dir.string());
+  install_interrupt_handler();
+  reporter.note("silva bench (" + plan.kind + "): results go to " + dir.string() +
+                " (Ctrl-C stops early and writes the figures measured so far, marked partial)");
   const auto t0 = std::chrono::steady_clock::now();
   const BenchContext ctx = make_bench_context(plan, std::move(thesis), scratch.path, reporter, cores);
   nlohmann::json results = run_bench_suite(ctx, seconds_since(t0));
-  results["peers"] = run_peers_bench(peers_bench_path());
+  const bool interrupted = results["interrupted"];
+  results["peers"] = interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
+                                 : run_peers_bench(peers_bench_path());
   reporter.note(results["peers"].value("ran", false) ? "peers_bench ran" : results["peers"]["note"].get<std::string>());
 
   const std::string stem = results["created_utc"].get<std::string>().substr(0, 10) + "-" +
-                           results["cpu_slug"].get<std::string>() + (plan.kind == "full" ? "" : "-" + plan.kind);
-  const auto previous = previous_results(dir, plan.kind, results["cpu_slug"]);
+                           results["cpu_slug"].get<std::string>() + (plan.kind == "full" ? "" : "-" + plan.kind) +
+                           (interrupted ? "-partial" : "");
+  if (interrupted) results["kind"] = plan.kind + "-partial";  // never the baseline of a complete run
+  const auto previous = previous_results(dir, results["kind"], results["cpu_slug"]);
   const std::vector<Regression> regressions = previous ? compare_results(read_json(*previous), results)
                                                        : std::vector<Regression>{};
   results["compared_with"] = previous ? previous->filename().string() : "";
@@ -96,6 +103,7 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   std::string text = "wrote " + json_path.string() + " and " + md_path.string() + " (" +
                      std::to_string(regressions.size()) + " figure(s) 10 % or more slower than " +
                      (previous ? previous->filename().string() : std::string("nothing: no earlier results")) + ")";
+  if (interrupted) throw Interrupted("bench interrupted; the figures measured so far are in " + json_path.string());
   reporter.result(summary, text);
   return 0;
 }

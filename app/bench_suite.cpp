@@ -6,6 +6,7 @@
 #include "app/bench_capture.hpp"
 #include "app/bench_generation.hpp"
 #include "app/bench_machine.hpp"
+#include "app/interrupt.hpp"
 
 namespace silva::app {
 
@@ -30,11 +31,15 @@ nlohmann::json run_bench_suite(const BenchContext& ctx, double setup_s) {
                  {"autopilot_frames", ctx.plan.autopilot_frames}, {"scaling_frames", ctx.plan.scaling_frames},
                  {"threads", ctx.plan.threads}};
   doc["setup_s"] = setup_s;
-  std::vector<Figure> figures = bench_generation(ctx);
-  for (auto* part : {&bench_capture, &bench_generation_threads, &bench_autopilot_and_scaling}) {
-    std::vector<Figure> more = (*part)(ctx);
-    figures.insert(figures.end(), more.begin(), more.end());
+  std::vector<Figure> figures;
+  bool interrupted = false;
+  try {
+    for (auto* part : {&bench_generation, &bench_capture, &bench_generation_threads, &bench_autopilot_and_scaling})
+      (*part)(ctx, figures);
+  } catch (const Interrupted&) {
+    interrupted = true;
   }
+  doc["interrupted"] = interrupted;
   doc["tables"] = nlohmann::json::object();
   doc["figures"] = nlohmann::json::array();
   for (const Figure& f : figures) {

@@ -85,7 +85,7 @@ int run_profile_placement(const ProfilePlacementRequest& request, const Reporter
       if (s.density != density) continue;
       char name[64];
       std::snprintf(name, sizeof name, "heatmap-density-%g.png", density);
-      io::write_file_atomic(dir / name, heatmap_png(s.world, max_per_ha, 2));
+      io::write_file_atomic(dir / name, heatmap_png(s.world, max_per_ha, 3));
       heatmaps.push_back({{"file", name}, {"density", density}, {"seed", s.seed}, {"max_elevation", s.max_elevation},
                           {"trail", s.trail}});
       break;

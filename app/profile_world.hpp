@@ -42,7 +42,7 @@ struct WorldProfile {
 };
 
 /// Side of a heatmap cell, metres.
-inline constexpr double kHeatCell = 4.0;
+inline constexpr double kHeatCell = 8.0;
 /// Side of a cover-grid cell, metres.
 inline constexpr double kCoverCell = 0.25;
 
