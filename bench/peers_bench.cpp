@@ -38,6 +38,17 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// Work counts and times every benchmark reports.
+void report(benchmark::State& state, double setup_ms, double cold_ms) {
+  const ForestScene& w = forest_scene();
+  state.counters["triangles"] = double(w.triangle_count());
+  state.counters["pixels"] = double(w.camera.width) * double(w.camera.height);
+  state.counters["setup_ms"] = setup_ms;
+  state.counters["cold_ms"] = cold_ms;
+  state.counters["ms_per_frame"] = benchmark::Counter(1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+#if defined(SILVA_PEER_EMBREE) || defined(SILVA_PEER_LLVMPIPE)
 /// Silva's visibility of the scene (identical for any thread count), computed once.
 const PeerFrame& silva_reference() {
   static const PeerFrame f = [] {
@@ -47,16 +58,6 @@ const PeerFrame& silva_reference() {
     return from_visibility(r.render_visibility(forest_scene().scene, forest_scene().camera, opt));
   }();
   return f;
-}
-
-/// Work counts and times every benchmark reports.
-void report(benchmark::State& state, double setup_ms, double cold_ms) {
-  const ForestScene& w = forest_scene();
-  state.counters["triangles"] = double(w.triangle_count());
-  state.counters["pixels"] = double(w.camera.width) * double(w.camera.height);
-  state.counters["setup_ms"] = setup_ms;
-  state.counters["cold_ms"] = cold_ms;
-  state.counters["ms_per_frame"] = benchmark::Counter(1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 /// Compares a peer's frame with Silva's; reports the agreement and fails the run below the bar.
@@ -70,6 +71,7 @@ void cross_check(benchmark::State& state, const PeerFrame& peer, const char* nam
                          ", depth within 0.1% " + std::to_string(a.depth) + " (need >= 0.99 each)")
                             .c_str());
 }
+#endif
 
 /// Silva: visibility pass in a task_arena of state.range(0) threads (setup: none; cold = first frame).
 void BM_Silva(benchmark::State& state) {
