@@ -38,7 +38,8 @@ sanitize: deps
 
 ## make tidy: clang-tidy (checks in .clang-tidy) over the library and app sources; configures
 ## its own folder (no compile needed, only compile_commands.json)
-tidy: deps
+tidy:
+	@bash scripts/install-deps.sh --tidy
 	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_BENCH=OFF >/dev/null
 	bash scripts/tidy.sh build-tidy $(JOBS)
 

@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# Installs exactly the Debian packages Silva's build and tests need.
-# A fast no-op when every package is already installed.
+# Installs exactly the Debian (bookworm) packages Silva's build and tests need; a fast no-op
+# (one dpkg-query call) when every one is already installed. Runs as root, or through sudo.
+# Usage: scripts/install-deps.sh [--bench] [--tidy]
+#   --bench  also what `make bench` needs (Embree and OpenGL/EGL for the comparison renderers,
+#            matplotlib/numpy for the plots)
+#   --tidy   also clang-tidy, for `make tidy`
+# ccache is optional (CMake uses it when present) and git only names the revision; neither is listed.
 set -euo pipefail
+
 PKGS=(
   cmake make g++ pkg-config
   libeigen3-dev
@@ -11,15 +17,41 @@ PKGS=(
   libdeflate-dev libxxhash-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+BENCH_PKGS=(
+  libembree-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0
+  python3-matplotlib python3-numpy
+)
+TIDY_PKGS=(clang-tidy)
+
+for arg in "$@"; do
+  case "$arg" in
+    --bench) PKGS+=("${BENCH_PKGS[@]}") ;;
+    --tidy) PKGS+=("${TIDY_PKGS[@]}") ;;
+    -h | --help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "install-deps: unknown option '$arg' (allowed: --bench, --tidy)" >&2; exit 2 ;;
+  esac
+done
+
+# One dpkg-query for all packages; unknown ones print nothing (and make it exit 1).
+installed=$(dpkg-query -W -f='${Package} ${db:Status-Status}\n' "${PKGS[@]}" 2>/dev/null || true)
+declare -A state=()
+while read -r name status; do [ -n "$name" ] && state[$name]=$status; done <<<"$installed"
 missing=()
 for p in "${PKGS[@]}"; do
-  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
-  [ "$status" = "installed" ] || missing+=("$p")
+  [ "${state[$p]:-}" = installed ] || missing+=("$p")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
+
 echo "install-deps: installing ${missing[*]}" >&2
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root (or install sudo) to install: ${missing[*]}" >&2; exit 1; }
+  SUDO=(sudo)
+fi
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+install=("${SUDO[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}")
+# Try the current package lists first (works offline from the apt cache); refresh them on failure.
+if ! "${install[@]}"; then
+  "${SUDO[@]}" apt-get update -q
+  "${install[@]}"
+fi
