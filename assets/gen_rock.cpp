@@ -13,6 +13,7 @@ GeneratedAsset generate_rock(Rng& rng) {
     float freq, amp, phase;
   };
   std::vector<Wave> waves;
+  waves.reserve(5);
   for (int k = 0; k < 5; ++k)
     waves.push_back({random_direction(rng), rng.range(1.5f, 4.0f), rng.range(0.04f, 0.12f), rng.range(0.0f, 2.0f * kPi)});
   const Vec3f stretch(1.0f, rng.range(0.6f, 1.0f), rng.range(0.4f, 0.8f));

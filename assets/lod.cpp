@@ -12,7 +12,8 @@ namespace {
 /// Simplifies one solid part's triangles (indices into `full`) to about `ratio` of them.
 std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, float ratio) {
   const uint32_t* src = full.indices.data() + part.first_index;
-  const size_t target = std::max<size_t>(3, size_t(std::lround(float(part.index_count / 3) * ratio)) * 3);
+  const size_t triangles = part.index_count / 3;
+  const size_t target = std::max<size_t>(3, size_t(std::lround(float(triangles) * ratio)) * 3);
   std::vector<uint32_t> out(part.index_count);
   const float* pos = full.positions[0].data();
   size_t n = meshopt_simplify(out.data(), src, part.index_count, pos, full.positions.size(), sizeof(Vec3f),

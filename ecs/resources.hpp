@@ -22,7 +22,7 @@ class Resources {
     using R = std::decay_t<T>;
     const std::uint32_t id = type_id<R>();
     if (id >= holders_.size()) holders_.resize(std::size_t(id) + 1);
-    auto holder = std::make_unique<Holder<R>>(std::forward<T>(value));
+    auto holder = std::make_unique<Holder<R>>(std::in_place, std::forward<T>(value));
     R& ref = holder->value;
     holders_[id] = std::move(holder);
     return ref;
@@ -58,7 +58,7 @@ class Resources {
   template <class R>
   struct Holder final : HolderBase {
     template <class U>
-    explicit Holder(U&& v) : value(std::forward<U>(v)) {}
+    Holder(std::in_place_t, U&& v) : value(std::forward<U>(v)) {}  // tagged: never a copy/move ctor
     R value;
   };
 

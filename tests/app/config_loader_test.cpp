@@ -38,6 +38,8 @@ TEST(ConfigLoader, DefaultsAreTheThesisDefaults) {
   const Config c;
   EXPECT_EQ(c.vegetation.density, 5);
   EXPECT_EQ(c.terrain.max_elevation, 1.5);
+  EXPECT_EQ(c.terrain.lacunarity, 2.0);
+  EXPECT_EQ(c.terrain.persistence, 0.5);
   EXPECT_EQ(c.output.width, 1920);
   EXPECT_EQ(c.output.height, 1080);
   EXPECT_EQ(c.captures.random_count, 100);
