@@ -13,12 +13,16 @@ Progress::Progress(const Reporter& reporter, int total, std::string what)
       what_(std::move(what)),
       tty_(isatty(STDERR_FILENO) != 0),
       every_(std::max(1, total / 20)),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()),
+      last_line_(start_) {}
 
 void Progress::update(int done) {
   if (reporter_.flags().quiet) return;
-  if (!tty_ && done % every_ != 0 && done != total_) return;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const auto now = std::chrono::steady_clock::now();
+  const bool due = done % every_ == 0 || done == total_ || now - last_line_ >= kLineInterval;
+  if (!tty_ && !due) return;
+  last_line_ = now;
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double rate = elapsed > 0 ? done / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
   if (tty_) {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Progress of a long run on stderr: a live bar with frames/s and ETA on a terminal, one
-/// line every few frames otherwise; nothing with --quiet.
+/// line every 5 % of the items (and at least every 30 s) otherwise; nothing with --quiet.
 #include <chrono>
 #include <string>
 
@@ -25,6 +25,9 @@ class Progress {
   bool tty_;
   int every_;
   std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_line_;
+  /// Longest time between two progress lines without a terminal.
+  static constexpr std::chrono::seconds kLineInterval{30};
 };
 
 }  // namespace silva::app

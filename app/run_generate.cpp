@@ -44,11 +44,11 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   const Config& cfg = loaded.config;
   if (request.shard && request.overwrite)
     throw InputError("--overwrite cannot be combined with --shard (shards share one folder); empty it first");
-  if (!loaded.seed_given) {
+  const bool seed_from_marker = !loaded.seed_given;
+  if (seed_from_marker) {
     loaded.config.seed = io::find_resumable_seed(cfg.output.dir);
     loaded.seed_given = true;
   }
-  reporter.note("seed " + io::seed_folder_name(cfg.seed) + (loaded.seed_from_clock ? " (from the clock)" : ""));
 
   const auto t_plan = std::chrono::steady_clock::now();
   RunSetup setup = make_run_setup(loaded);
@@ -62,6 +62,10 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   const double plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_plan).count();
 
   const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(loaded), folder_mode(request));
+  // Noted once every input is checked, so bad input prints only its error line (a seed drawn
+  // from the clock was noted when it was drawn).
+  if (!loaded.seed_from_clock)
+    reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
 
   world::CaptureJob job;
@@ -80,9 +84,9 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     }
     job.frames.push_back(f);
   }
-  reporter.note("capturing " + std::to_string(job.frames.size()) + " frames at " + std::to_string(cfg.output.width) +
-                "x" + std::to_string(cfg.output.height) + " into " + run_dir.string() +
-                (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
+  reporter.note("silva: capturing " + std::to_string(job.frames.size()) + " frames at " +
+                std::to_string(cfg.output.width) + "x" + std::to_string(cfg.output.height) + " into " +
+                run_dir.string() + (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
 
   Progress progress(reporter, int(job.frames.size()), "frames");
   const world::CaptureStats stats = world::run_capture(job, cache, [&](int done, int) { progress.update(done); });

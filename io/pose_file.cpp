@@ -55,6 +55,16 @@ PoseEntry pose_from_json(const nlohmann::json& e, const std::string& where) {
   if (has_matrix == has_position)
     throw InputError(where + ": needs exactly one of \"position\" (with yaw_deg, pitch_deg, roll_deg) or "
                      "\"camera_to_world\"");
+  // A key this format does not know would be silently ignored: refuse it.
+  const std::vector<std::string> allowed =
+      has_matrix ? std::vector<std::string>{"camera_to_world"}
+                 : std::vector<std::string>{"position", "yaw_deg", "pitch_deg", "roll_deg"};
+  for (const auto& item : e.items()) {
+    if (std::find(allowed.begin(), allowed.end(), item.key()) != allowed.end()) continue;
+    std::string list;
+    for (const std::string& k : allowed) list += (list.empty() ? "" : ", ") + k;
+    throw InputError(where + ": unknown key \"" + item.key() + "\" (allowed with it: " + list + ")");
+  }
   if (has_matrix) return pose_from_matrix(e, where);
   const nlohmann::json& pos = e["position"];
   const bool shape_ok = pos.is_array() && (pos.size() == 2 || pos.size() == 3) &&

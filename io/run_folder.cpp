@@ -16,9 +16,17 @@ namespace fs = std::filesystem;
 namespace {
 constexpr const char* kMarker = ".silva-run.json";
 
-bool is_empty_dir(const fs::path& dir) {
+/// True when `dir` holds nothing but (maybe) leftover temp files: a run killed while it wrote
+/// its marker left no run yet.
+bool holds_no_run(const fs::path& dir) {
   std::error_code ec;
-  return fs::is_directory(dir, ec) && fs::directory_iterator(dir, ec) == fs::directory_iterator();
+  if (!fs::is_directory(dir, ec)) return false;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    const bool temp = name.size() > kTempSuffix.size() && name.ends_with(kTempSuffix);
+    if (!temp || entry.is_directory(ec)) return false;
+  }
+  return !ec;
 }
 
 void create_dirs(const fs::path& dir) {
@@ -82,7 +90,10 @@ fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std:
   const bool exists = fs::exists(run_dir, ec);
   if (exists && !fs::is_directory(run_dir, ec))
     throw InputError("output path " + run_dir.string() + " exists and is not a folder");
-  if (exists && !is_empty_dir(run_dir)) {
+  if (exists && holds_no_run(run_dir)) {
+    // A shard leaves them: another shard may be writing its marker right now.
+    if (mode != FolderMode::Shard) remove_temp_files(run_dir);
+  } else if (exists) {
     const auto marker = read_run_marker(run_dir);
     const bool same = marker && marker->config_hash == config_hash;
     if (mode == FolderMode::Overwrite) {

@@ -28,7 +28,8 @@ std::optional<RunMarker> read_run_marker(const std::filesystem::path& run_dir);
 int64_t find_resumable_seed(const std::filesystem::path& output_dir);
 
 /// Prepares `<output_dir>/<seed>/` for writing according to `mode` and writes the marker.
-/// Fresh: the folder must be absent or empty, else InputError suggesting --resume/--overwrite.
+/// A folder holding nothing but leftover temp files (a run killed while writing its marker) counts
+/// as empty. Fresh: the folder must be absent or empty, else InputError suggesting --resume/--overwrite.
 /// Resume: the marker's config hash must match; leftover temp files are deleted.
 /// Overwrite: the folder is emptied first. A different config without Overwrite is InputError.
 /// Unwritable paths throw IoError. Returns the run folder.

@@ -113,6 +113,10 @@ TEST(PoseFile, JsonErrorsNameFileAndPoseIndex) {
   EXPECT_NE(err(R"({"yaw_deg": 0})").find("pose 1"), std::string::npos);
   EXPECT_NE(err(R"({"camera_to_world": [[1,0,0,0],[0,1,0,0],[0,0,1,0]]})").find("4x4"), std::string::npos);
   EXPECT_NE(err("7").find("pose 1"), std::string::npos);
+  const std::string unknown = err(R"({"position": [0, 0, 1], "yaw_deg": 0, "pitch_deg": 0, "roll_deg": 0, "fov": 60})");
+  EXPECT_NE(unknown.find("pose 1: unknown key \"fov\""), std::string::npos) << unknown;
+  EXPECT_NE(err(R"({"camera_to_world": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]], "yaw_deg": 3})").find("\"yaw_deg\""),
+            std::string::npos);
   EXPECT_NE(error_of([] { parse_pose_json(R"({"poses": []})", "e.json"); }).find("no poses"), std::string::npos);
   EXPECT_NE(error_of([] { parse_pose_json(R"({"pose": []})", "e.json"); }).find("poses"), std::string::npos);
   EXPECT_NE(error_of([] { parse_pose_json("{", "e.json"); }).find("e.json"), std::string::npos);
