@@ -27,7 +27,10 @@ inline double det_exp(double x) {
   constexpr double kInvLn2 = 1.44269504088896338700;
   if (x > 700.0) x = 700.0;
   if (x < -700.0) return 0.0;
-  const double k = std::nearbyint(x * kInvLn2);
+  // Round to nearest even by the 1.5 * 2^52 trick: the same value as std::nearbyint in the
+  // default rounding mode for |x kInvLn2| < 2^51, without a libm call.
+  constexpr double kRound = 6755399441055744.0;
+  const double k = (x * kInvLn2 + kRound) - kRound;
   const double r = (x - k * kLn2Hi) - k * kLn2Lo;
   double p = kInverseFactorials.v[13];
   for (int n = 12; n >= 0; --n) p = p * r + kInverseFactorials.v[n];
