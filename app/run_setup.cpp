@@ -40,7 +40,7 @@ std::map<std::string, render::LightingPreset> load_presets(const LoadedConfig& l
 fs::path asset_library_path() {
   const char* env = std::getenv("SILVA_ASSETS");
   const fs::path dir = env && *env ? fs::path(env) : fs::path(SILVA_ASSET_DIR);
-  const fs::path path = dir / "library.json";
+  fs::path path = dir / "library.json";
   if (!fs::exists(path))
     throw InputError("asset library " + path.string() + " not found; run `silva assets build --out " + dir.string() +
                      "` or set SILVA_ASSETS to a folder holding library.json");

@@ -85,7 +85,7 @@ int64_t find_resumable_seed(const fs::path& output_dir) {
 
 fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std::string& config_hash,
                             FolderMode mode) {
-  const fs::path run_dir = output_dir / seed_folder_name(seed);
+  fs::path run_dir = output_dir / seed_folder_name(seed);
   std::error_code ec;
   const bool exists = fs::exists(run_dir, ec);
   if (exists && !fs::is_directory(run_dir, ec))
