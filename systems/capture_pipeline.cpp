@@ -3,6 +3,7 @@
 #include <tbb/parallel_pipeline.h>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -93,6 +94,15 @@ AABB shadow_region(const WorldContext& ctx, const Camera& camera) {
   return box;
 }
 
+}  // namespace
+
+int shadow_resolution(const Camera& camera) {
+  const unsigned longer = unsigned(std::max(camera.width, camera.height));
+  return std::clamp(int(std::bit_ceil(longer)), kMinShadowResolution, kShadowResolution);
+}
+
+namespace {
+
 /// Streams, prepares and renders one frame (G-buffer + shadow map); timings into `work`.
 void render_into(const CaptureJob& job, ChunkCache& cache, const SceneBuilder& builder, render::Renderer& renderer,
                  FrameWork& work) {
@@ -119,7 +129,7 @@ void render_into(const CaptureJob& job, ChunkCache& cache, const SceneBuilder& b
   if (job.outputs.has(io::OutputType::Rgb)) {
     t = Clock::now();
     const Vec3f sun = render::sun_direction(job.preset);
-    renderer.render_shadow_map(scene.scene, sun.cast<double>(), shadow_region(ctx, f.camera), kShadowResolution,
+    renderer.render_shadow_map(scene.scene, sun.cast<double>(), shadow_region(ctx, f.camera), shadow_resolution(f.camera),
                                options, work.shadow);
     work.shadow_s = seconds_since(t);
   }
