@@ -36,8 +36,8 @@ CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::Pla
   job.frames = std::move(frames);
   job.stop = [] { return interrupt_requested(); };
   CaptureRun run;
-  run.width = w.world.config.output.width;
-  run.height = w.world.config.output.height;
+  run.width = job.frames.empty() ? 0 : job.frames.front().camera.width;  // frames may be planned at another size
+  run.height = job.frames.empty() ? 0 : job.frames.front().camera.height;
   const auto t0 = std::chrono::steady_clock::now();
   tbb::task_arena arena(threads);
   arena.execute([&] {
@@ -146,8 +146,10 @@ void capture_vs_count(const BenchContext& ctx, WarmWorld& w, std::vector<Figure>
     Figure f = capture_figure(ctx, "5.7", x, run, false, w);
     if (n <= measured) {
       f.silva_s = run.done_at_s[size_t(n - 1)];
-      f.note = "time to the " + x + "th completed set of a " + std::to_string(measured) + "-set run";
+      f.note = "time to the " + x + "th completed set of a " + std::to_string(measured) +
+               "-set run (triangles: the whole run)";
       f.work.frames = uint64_t(n);
+      f.work.pixels = f.work.frames * uint64_t(run.width) * uint64_t(run.height);
     } else {
       f.silva_s = run.stats.wall_s * n / measured;
       f.extrapolated = true;

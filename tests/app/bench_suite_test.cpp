@@ -40,8 +40,8 @@ const nlohmann::json& tiny_results() {
   return doc;
 }
 
-TEST(BenchSuite, EveryThesisTableAndEveryThesisXIsMeasured) {
-  const auto& doc = tiny_results();
+/// Every thesis table and every thesis x is measured.
+void check_every_table(const nlohmann::json& doc) {
   const ThesisTables thesis = ThesisTables::load(std::string(SILVA_SOURCE_DIR) + "/bench/thesis-tables.json");
   for (const char* table : {"5.1", "5.2", "5.3", "5.4", "5.4b", "5.5", "5.6", "5.7", "5.8", "5.9", "autopilot"}) {
     EXPECT_TRUE(doc["tables"].contains(table)) << table;
@@ -57,8 +57,9 @@ TEST(BenchSuite, EveryThesisTableAndEveryThesisXIsMeasured) {
   }
 }
 
-TEST(BenchSuite, EveryFigureHasWorkCountsAndAThesisRatio) {
-  for (const auto& f : tiny_results()["figures"]) {
+/// Every figure has work counts and (thesis tables) a ratio.
+void check_work_and_ratios(const nlohmann::json& doc) {
+  for (const auto& f : doc["figures"]) {
     const std::string table = f["table"];
     const auto& w = f["work"];
     SCOPED_TRACE(table + " x=" + f["x"].get<std::string>());
@@ -85,8 +86,9 @@ TEST(BenchSuite, EveryFigureHasWorkCountsAndAThesisRatio) {
   }
 }
 
-TEST(BenchSuite, LargerRunsThanMeasuredAreMarkedExtrapolated) {
-  for (const auto& f : tiny_results()["figures"]) {
+/// Figures for runs larger than measured are marked extrapolated, measured ones are not.
+void check_extrapolated(const nlohmann::json& doc) {
+  for (const auto& f : doc["figures"]) {
     if (f["table"] == "5.7") {
       EXPECT_EQ(f["extrapolated"].get<bool>(), std::stoi(f["x"].get<std::string>()) > 2) << f["x"];
     } else if (f["table"] == "autopilot") {
@@ -97,16 +99,21 @@ TEST(BenchSuite, LargerRunsThanMeasuredAreMarkedExtrapolated) {
   }
 }
 
-TEST(BenchSuite, GenerationWorkGrowsWithDensityAndDropsWithoutGround) {
-  std::map<std::string, uint64_t> objects;
-  for (const auto& f : tiny_results()["figures"]) objects[f["table"].get<std::string>() + "/" + f["x"].get<std::string>()] = f["work"]["objects"];
-  EXPECT_LT(objects["5.1/1"], objects["5.1/25"]);
-  EXPECT_LT(objects["5.4b/false"], objects["5.1/5"]);
-  EXPECT_EQ(objects["5.3/day"], objects["5.3/night"]) << "the world does not depend on the time of day";
+/// The varied settings change the generated world (and the time of day does not).
+void check_generation_work(const nlohmann::json& doc) {
+  std::map<std::string, nlohmann::json> by;
+  for (const auto& f : doc["figures"]) by[f["table"].get<std::string>() + "/" + f["x"].get<std::string>()] = f;
+  const auto hash = [&](const std::string& key) { return by[key]["breakdown"]["world_hash"].get<std::string>(); };
+  EXPECT_NE(hash("5.1/1"), hash("5.1/25"));
+  EXPECT_NE(hash("5.4/true"), hash("5.4/false"));
+  EXPECT_LT(by["5.4b/false"]["work"]["objects"].get<uint64_t>(), by["5.1/5"]["work"]["objects"].get<uint64_t>())
+      << "no grass and ferns";
+  EXPECT_EQ(hash("5.3/day"), hash("5.3/night")) << "the world does not depend on the time of day";
+  EXPECT_EQ(hash("5.3/day"), hash("5.1/5")) << "the defaults";
 }
 
-TEST(BenchSuite, ReportHasEveryTableAndTheMachine) {
-  const auto& doc = tiny_results();
+/// The markdown report shows every table, the machine and the comparison.
+void check_report(const nlohmann::json& doc) {
   const std::string md = bench_markdown(doc, "", {}, test::fresh_test_dir(), "x");
   for (const char* table : {"5.1", "5.2", "5.3", "5.4", "5.4b", "5.5", "5.6", "5.7", "5.8", "5.9"})
     EXPECT_NE(md.find(std::string("## Table ") + table + " "), std::string::npos) << table;
@@ -115,6 +122,17 @@ TEST(BenchSuite, ReportHasEveryTableAndTheMachine) {
   EXPECT_NE(md.find("No earlier results"), std::string::npos);
   const std::string flagged = bench_markdown(doc, "old.json", {{"5.1", "5", 1.0, 1.2, 0.2}}, test::fresh_test_dir(), "x");
   EXPECT_NE(flagged.find("| 5.1 | 5 | 1.00 | 1.20 | +20.0 % |"), std::string::npos);
+}
+
+// One test (one process under ctest) so the tiny sweep runs once.
+TEST(BenchSuite, TinySweepMeasuresEveryTableWithWorkCountsAndReportsIt) {
+  const nlohmann::json& doc = tiny_results();
+  EXPECT_FALSE(doc["interrupted"].get<bool>());
+  check_every_table(doc);
+  check_work_and_ratios(doc);
+  check_extrapolated(doc);
+  check_generation_work(doc);
+  check_report(doc);
 }
 
 TEST(BenchMachine, CpuSlugIsFileNameSafe) {
