@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "app/data_path.hpp"
+#include "app/version.hpp"
 
 namespace silva::app {
 
@@ -42,10 +43,10 @@ std::string first_line(const std::string& cmd) {
 }
 
 /// The source tree's git revision (short hash, "+dirty" when tracked files differ), else the one built in.
-std::string git_revision() {
+std::string source_revision() {
   const std::string git = "git -C '" + data_root().string() + "' ";
   const std::string rev = first_line(git + "rev-parse --short HEAD 2>/dev/null");
-  if (rev.empty()) return SILVA_GIT_REV;
+  if (rev.empty()) return app::git_revision();
   return rev + (first_line(git + "status --porcelain --untracked-files=no 2>/dev/null").empty() ? "" : "+dirty");
 }
 
@@ -91,7 +92,7 @@ nlohmann::json machine_description() {
           {"os", field("/etc/os-release", "PRETTY_NAME")},
           {"kernel", std::string(u.sysname) + " " + u.release + " " + u.machine},
           {"compiler", compiler},
-          {"git_revision", git_revision()},
+          {"git_revision", source_revision()},
           {"load_average_start", load_average()}};
 }
 

@@ -34,7 +34,7 @@ Handler add_version_command(CLI::App& root) {
     std::string text = version_line() + "\nSIMD targets:";
     for (const std::string& t : targets) text += " " + t;
     const nlohmann::json summary = {
-        {"version", SILVA_VERSION}, {"git_revision", SILVA_GIT_REV}, {"simd_targets", targets}};
+        {"version", silva_version()}, {"git_revision", git_revision()}, {"simd_targets", targets}};
     Reporter(*output).result(summary, text);
     return 0;
   };

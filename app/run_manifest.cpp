@@ -7,6 +7,7 @@
 
 #include "app/config_print.hpp"
 #include "io/sha256.hpp"
+#include "app/version.hpp"
 
 namespace silva::app {
 
@@ -23,7 +24,7 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   nlohmann::json frames = nlohmann::json::object();
   for (const auto& [sequence, n] : frames_per_sequence) frames[sequence] = n;
   return {
-      {"silva_version", SILVA_VERSION},
+      {"silva_version", silva_version()},
       {"seed", loaded.config.seed},
       {"config", config},
       {"sha256",
@@ -41,8 +42,8 @@ nlohmann::json make_run_record(const world::CaptureStats& s, int threads, int sk
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
   return {
-      {"silva_version", SILVA_VERSION},
-      {"git_revision", SILVA_GIT_REV},
+      {"silva_version", silva_version()},
+      {"git_revision", git_revision()},
       {"threads", threads},
       {"host", host},
       {"date", date},

@@ -2,6 +2,10 @@
 
 namespace silva::app {
 
-std::string version_line() { return std::string("silva ") + SILVA_VERSION + " (git " + SILVA_GIT_REV + ")"; }
+const char* silva_version() { return SILVA_VERSION; }
+
+const char* git_revision() { return SILVA_GIT_REV; }
+
+std::string version_line() { return std::string("silva ") + silva_version() + " (git " + git_revision() + ")"; }
 
 }  // namespace silva::app
