@@ -89,7 +89,8 @@ float tonemap_aces(float x) {
 
 uint8_t linear_to_srgb8(float x) {
   const float c = std::clamp(x, 0.0f, 1.0f);
-  return srgb_table()[size_t(int(c * float(kSrgbTableSize - 1) + 0.5f))];
+  // c >= 0, so adding 0.5 and truncating rounds half up; these exact bytes are part of the output.
+  return srgb_table()[size_t(int(c * float(kSrgbTableSize - 1) + 0.5f))];  // NOLINT(bugprone-incorrect-roundings)
 }
 
 uint64_t grain_key(std::string_view sequence, uint64_t frame) {

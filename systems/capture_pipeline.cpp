@@ -214,7 +214,7 @@ CaptureStats run_capture(const CaptureJob& job, ChunkCache& cache, const Progres
     render_into(job, cache, builder, renderer, *work);
     return work;
   };
-  auto encode_stage = [&](std::shared_ptr<FrameWork> work) {
+  auto encode_stage = [&](const std::shared_ptr<FrameWork>& work) {
     shade_into(job, *work);
     const auto t = Clock::now();
     work->files = io::encode_capture_set(work->rendered.gbuffer, work->rendered.rgb, job.ontology, job.outputs,
@@ -222,7 +222,7 @@ CaptureStats run_capture(const CaptureJob& job, ChunkCache& cache, const Progres
     work->encode_s = seconds_since(t);
     return work;
   };
-  auto write_stage = [&](std::shared_ptr<FrameWork> work) {
+  auto write_stage = [&](const std::shared_ptr<FrameWork>& work) {
     const auto t = Clock::now();
     const fs::path seq = job.run_dir / work->frame->sequence;
     for (const io::EncodedFile& file : work->files) {

@@ -48,7 +48,7 @@ std::vector<Eigen::Vector2d> catmull_rom_centripetal(const std::vector<Eigen::Ve
   out.reserve((c.size() - 1) * size_t(per_segment) + 1);
   auto knot = [](const V& a, const V& b) { return std::max(std::sqrt((b - a).norm()), 1e-6); };
   for (size_t k = 0; k + 1 < c.size(); ++k) {
-    const V p1 = c[k], p2 = c[k + 1];
+    const V &p1 = c[k], &p2 = c[k + 1];
     const V p0 = k > 0 ? c[k - 1] : V(2.0 * p1 - p2);
     const V p3 = k + 2 < c.size() ? c[k + 2] : V(2.0 * p2 - p1);
     const double t0 = 0, t1 = t0 + knot(p0, p1), t2 = t1 + knot(p1, p2), t3 = t2 + knot(p2, p3);
