@@ -62,6 +62,8 @@ std::vector<ConfigKey> build_schema() {
        between(-90, 90), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_pitch_deg; }},
       {"camera.film_grain", T::Float, "grain std-dev in linear [0,1] units, 0 = off",
        between(0, 1), {}, [](Config& c) -> FieldRef { return &c.camera.film_grain; }},
+      {"camera.antialias", T::Bool, "edge antialiasing of RGB; labels and depth stay exact per pixel", {}, {},
+       [](Config& c) -> FieldRef { return &c.camera.antialias; }},
       {"vegetation.density", T::Float, "percent of placement points that hold a tree",
        between(1, 25), {}, [](Config& c) -> FieldRef { return &c.vegetation.density; }},
       {"vegetation.grid_spacing", T::Float, "metres between placement points", between(0.1, 1000),

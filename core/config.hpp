@@ -40,6 +40,7 @@ struct CameraConfig {
   double aerial_height = 15;      ///< camera.aerial_height (m above ground)
   double aerial_pitch_deg = -45;  ///< camera.aerial_pitch_deg
   double film_grain = 0.015;      ///< camera.film_grain (std-dev, linear units)
+  bool antialias = true;          ///< camera.antialias: edge filter on RGB (labels stay exact)
 };
 
 /// Vegetation placement (`[vegetation]`).

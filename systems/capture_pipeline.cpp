@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
 #include "io/capture_set.hpp"
+#include "render/edge_aa.hpp"
 #include "render/renderer.hpp"
 #include "render/shade.hpp"
 #include "systems/chunk_regions.hpp"
@@ -31,6 +32,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 struct FrameWork {
   const PlannedFrame* frame = nullptr;
   RenderedFrame rendered;
+  std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rendered.rgb`.
   render::ShadowMap shadow;
   io::EncodedSet files;
   double stream_s = 0, prepare_s = 0, render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;
@@ -144,6 +146,11 @@ void shade_into(const CaptureJob& job, FrameWork& work) {
                                uint64_t(job.world->config.seed), f.sequence, uint64_t(f.frame),
                                float(job.world->config.camera.film_grain)};
   render::shade_rgb(in, work.rendered.rgb);
+  if (job.world->config.camera.antialias) {
+    const render::GBuffer& g = work.rendered.gbuffer;
+    render::smooth_edges(work.rendered.rgb, g.width, g.height, work.rgb_scratch);
+    work.rendered.rgb.swap(work.rgb_scratch);
+  }
   work.shade_s = seconds_since(t);
 }
 

@@ -1,0 +1,79 @@
+#include "render/edge_aa.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace silva::render {
+
+namespace {
+
+/// Contrast (luma units 0..255) below which a pixel is left alone: absolute floor and relative share.
+constexpr float kMinContrast = 8.0f;
+constexpr float kRelativeContrast = 0.125f;
+/// Largest blend towards the neighbour across the edge.
+constexpr float kMaxBlend = 0.375f;
+
+/// Luma of an RGB byte triple (Rec. 601-like integer weights, exact in float).
+float luma(const uint8_t* p) { return (2.0f * float(p[0]) + 5.0f * float(p[1]) + float(p[2])) * 0.125f; }
+
+/// Filters one interior pixel at (x, y) into `dst`.
+void filter_pixel(const uint8_t* src, int width, int x, int y, uint8_t* dst) {
+  const size_t stride = size_t(width) * 3;
+  const uint8_t* c = src + size_t(y) * stride + size_t(x) * 3;
+  const uint8_t *n = c - stride, *s = c + stride, *e = c + 3, *w = c - 3;
+  const float lc = luma(c), ln = luma(n), ls = luma(s), le = luma(e), lw = luma(w);
+  const float hi = std::max({lc, ln, ls, le, lw}), lo = std::min({lc, ln, ls, le, lw});
+  const float contrast = hi - lo;
+  if (contrast < std::max(kMinContrast, kRelativeContrast * hi)) {
+    std::copy(c, c + 3, dst);
+    return;
+  }
+  const float lne = luma(n + 3), lnw = luma(n - 3), lse = luma(s + 3), lsw = luma(s - 3);
+  // Luma change across rows (a horizontal edge) vs across columns (a vertical edge).
+  const float across_rows = 2.0f * std::abs(ln + ls - 2.0f * lc) + std::abs(lne + lse - 2.0f * le) +
+                            std::abs(lnw + lsw - 2.0f * lw);
+  const float across_cols = 2.0f * std::abs(le + lw - 2.0f * lc) + std::abs(lne + lnw - 2.0f * ln) +
+                            std::abs(lse + lsw - 2.0f * ls);
+  // Blend towards the neighbour across the edge that differs most (all four on a tie, e.g. a spike).
+  const uint8_t* other = c;
+  float best = -1.0f;
+  const auto consider = [&](const uint8_t* p, float l) {
+    if (std::abs(l - lc) > best) best = std::abs(l - lc), other = p;
+  };
+  if (across_rows >= across_cols) consider(n, ln), consider(s, ls);
+  if (across_cols >= across_rows) consider(e, le), consider(w, lw);
+  // How much the pixel stands out from its neighbourhood, eased: 0 on smooth gradients, 1 on a spike.
+  const float average = (2.0f * (ln + ls + le + lw) + lne + lnw + lse + lsw) / 12.0f;
+  const float t = std::min(std::abs(average - lc) / contrast, 1.0f);
+  const float eased = t * t * (3.0f - 2.0f * t);
+  const float blend = kMaxBlend * eased;
+  for (int k = 0; k < 3; ++k) {
+    const float v = float(c[k]) + blend * (float(other[k]) - float(c[k]));
+    dst[k] = uint8_t(int(v + 0.5f));  // v >= 0: rounds half up
+  }
+}
+
+}  // namespace
+
+void smooth_edges(const std::vector<uint8_t>& rgb, int width, int height, std::vector<uint8_t>& out) {
+  if (width < 0 || height < 0 || rgb.size() != size_t(width) * size_t(height) * 3)
+    throw std::invalid_argument("smooth_edges: image buffer does not match its size");
+  out.resize(rgb.size());
+  const size_t stride = size_t(width) * 3;
+  tbb::parallel_for(0, height, [&](int y) {
+    const uint8_t* row = rgb.data() + size_t(y) * stride;
+    uint8_t* dst = out.data() + size_t(y) * stride;
+    if (y == 0 || y == height - 1 || width < 3) {
+      std::copy(row, row + stride, dst);
+      return;
+    }
+    std::copy(row, row + 3, dst);
+    for (int x = 1; x + 1 < width; ++x) filter_pixel(rgb.data(), width, x, y, dst + size_t(x) * 3);
+    std::copy(row + stride - 3, row + stride, dst + stride - 3);
+  });
+}
+
+}  // namespace silva::render
