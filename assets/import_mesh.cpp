@@ -4,11 +4,13 @@
 #include <cstring>
 
 #include <assimp/GltfMaterial.h>
+#include <assimp/material.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 
@@ -92,7 +94,10 @@ class AssetImporter {
     MeshPart part;
     part.first_index = uint32_t(out.indices.size());
     part.role = role->second;
-    if (!parse_material(name.c_str(), part.material)) part.material = default_material(part.role);
+    if (!parse_material(name.c_str(), part.material)) {
+      part.material = default_material(part.role);
+      part.base_color = base_color_of(mat);
+    }
     part.mask = mask_of(mat);
     int two_sided = part.mask ? 1 : 0;
     mat.Get(AI_MATKEY_TWOSIDED, two_sided);
@@ -116,19 +121,51 @@ class AssetImporter {
     if (part.index_count > 0) out.parts.push_back(std::move(part));
   }
 
+  /// The colour texture reference of a material (glTF base colour, else diffuse), or "".
+  static std::string texture_of(const aiMaterial& mat) {
+    aiString path;
+    if (mat.GetTexture(aiTextureType_BASE_COLOR, 0, &path) == AI_SUCCESS ||
+        mat.GetTexture(aiTextureType_DIFFUSE, 0, &path) == AI_SUCCESS)
+      return path.C_Str();
+    return "";
+  }
+
+  /// The file's own colour of a material (texture times colour factor), or null when it states
+  /// neither (assimp's unnamed default material counts as stating nothing).
+  std::shared_ptr<const BaseColor> base_color_of(const aiMaterial& mat) {
+    const std::string ref = texture_of(mat);
+    aiColor4D colour(1, 1, 1, 1);
+    const bool has_colour = std::string(mat.GetName().C_Str()) != AI_DEFAULT_MATERIAL_NAME &&
+                            (mat.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
+                             mat.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS);
+    if (ref.empty() && !has_colour) return nullptr;
+    auto out = std::make_shared<BaseColor>();
+    out->factor = Vec3f(colour.r, colour.g, colour.b);
+    if (!ref.empty()) {
+      cv::Mat image = read_texture(ref);
+      if (image.depth() != CV_8U) image.convertTo(image, CV_8U, 1.0 / 257.0);
+      cv::Mat rgb;
+      cv::cvtColor(image, rgb, image.channels() == 1 ? cv::COLOR_GRAY2RGB
+                               : image.channels() == 4 ? cv::COLOR_BGRA2RGB
+                                                       : cv::COLOR_BGR2RGB);
+      out->width = rgb.cols;
+      out->height = rgb.rows;
+      for (int y = 0; y < rgb.rows; ++y) out->srgb.insert(out->srgb.end(), rgb.ptr<uint8_t>(y), rgb.ptr<uint8_t>(y) + rgb.cols * 3);
+    }
+    return out;
+  }
+
   /// The alpha mask of a material, or null when it is not alpha-tested.
   std::shared_ptr<const AlphaMask> mask_of(const aiMaterial& mat) {
     aiString mode;
     if (mat.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS && std::string(mode.C_Str()) == "OPAQUE") return nullptr;
-    aiString path;
-    if (mat.GetTexture(aiTextureType_BASE_COLOR, 0, &path) != AI_SUCCESS &&
-        mat.GetTexture(aiTextureType_DIFFUSE, 0, &path) != AI_SUCCESS)
-      return nullptr;
+    const std::string ref = texture_of(mat);
+    if (ref.empty()) return nullptr;
     float cutoff = 0.5f;
     mat.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff);
-    const std::string key = std::string(path.C_Str()) + "|" + std::to_string(cutoff);
+    const std::string key = ref + "|" + std::to_string(cutoff);
     if (auto it = masks_.find(key); it != masks_.end()) return it->second;
-    const cv::Mat image = read_texture(path.C_Str());
+    const cv::Mat image = read_texture(ref);
     std::shared_ptr<AlphaMask> mask;
     if (image.channels() == 4) {
       cv::Mat alpha;

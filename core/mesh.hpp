@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/aabb.hpp"
+#include "core/base_color.hpp"
 #include "core/material.hpp"
 #include "core/ontology.hpp"
 #include "core/types.hpp"
@@ -26,7 +27,8 @@ struct MeshPart {
   uint32_t first_index = 0;    ///< Offset into Mesh::indices (multiple of 3).
   uint32_t index_count = 0;    ///< Number of indices (multiple of 3).
   Role role = Role::Ground;    ///< Semantic role of these triangles.
-  Material material = Material::Ground;  ///< Procedural material.
+  Material material = Material::Ground;  ///< Procedural material (also decides leaf translucency).
+  std::shared_ptr<const BaseColor> base_color;  ///< The asset file's own colour, or null: procedural albedo.
   std::shared_ptr<const AlphaMask> mask;  ///< Alpha mask (foliage cards), or null.
   bool double_sided = false;   ///< Disable back-face culling for this part.
 };

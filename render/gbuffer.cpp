@@ -12,6 +12,7 @@ void GBuffer::resize(int w, int h) {
   uv.assign(n, Vec2f::Zero());
   role.assign(n, Role::Background);
   material.assign(n, Material::Ground);
+  base_color.assign(n, 0);
   instance_id.assign(n, 0);
   variation.assign(n, 0);
 }

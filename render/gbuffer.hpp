@@ -19,6 +19,7 @@ struct GBuffer {
   std::vector<Vec2f> uv;                ///< Interpolated texture coordinates.
   std::vector<Role> role;               ///< Semantic role (class via the ontology).
   std::vector<Material> material;       ///< Procedural material.
+  std::vector<uint32_t> base_color;     ///< Own albedo of textured asset parts (pack_srgb8); 0 = use `material`.
   std::vector<uint32_t> instance_id;    ///< Packed instance id, 0 = none.
   std::vector<uint32_t> variation;      ///< Per-instance variation seed (Instance::variation).
   /// Allocates all planes for w x h and clears them to "no hit".

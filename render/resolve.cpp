@@ -27,6 +27,7 @@ void write_miss(GBuffer& g, size_t i) {
   g.uv[i] = Vec2f::Zero();
   g.role[i] = Role::Background;
   g.material[i] = Material::Ground;
+  g.base_color[i] = 0;
   g.instance_id[i] = 0;
   g.variation[i] = 0;
 }
@@ -112,6 +113,7 @@ void write_hit(const Camera& cam, const HitTriangle& h, int u, int v, GBuffer& g
   g.uv[i] = uv;
   g.role[i] = h.part->role;
   g.material[i] = h.part->material;
+  g.base_color[i] = h.part->base_color ? pack_srgb8(h.part->base_color->albedo(uv.x(), uv.y())) : 0;
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;
 }

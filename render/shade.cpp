@@ -8,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/base_color.hpp"
 #include "core/error.hpp"
 #include "render/materials.hpp"
 #include "render/post.hpp"
@@ -64,7 +65,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
-  const Vec3f albedo = material_albedo(s);
+  const Vec3f albedo = g.base_color[i] != 0 ? unpack_srgb8(g.base_color[i]) : material_albedo(s);
   const float n_dot_l = s.normal.dot(sky.to_sun);
   const float translucency = material_translucency(s.material) * in.preset.foliage_translucency;
   const float sun_facing = n_dot_l > 0.0f ? n_dot_l : -n_dot_l * translucency;

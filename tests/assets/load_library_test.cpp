@@ -4,6 +4,8 @@
 
 #include <fstream>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "assets/build_library.hpp"
 #include "core/error.hpp"
 #include "mesh_checks.hpp"
@@ -160,6 +162,47 @@ TEST_F(LoadLibraryTest, UserObjAssetGetsLodsBuiltAndYUpTurnedToZUp) {
   EXPECT_FLOAT_EQ(a.lods[0].bounds().max.z(), 2.0f);      // +Y became +Z
   EXPECT_EQ(a.lod_screen_sizes.size(), a.lods.size() - 1);
   EXPECT_EQ(lib.by_kind[size_t(AssetKind::Rock)], std::vector<uint32_t>{0});
+}
+
+TEST_F(LoadLibraryTest, UserAssetKeepsItsOwnTextureAndColour) {
+  const fs::path d = *dir_ / "textured";
+  fs::create_directories(d);
+  cv::Mat texture(1, 2, CV_8UC3);
+  texture.at<cv::Vec3b>(0, 0) = cv::Vec3b(0, 0, 255);  // OpenCV is BGR: red
+  texture.at<cv::Vec3b>(0, 1) = cv::Vec3b(255, 0, 0);  // blue
+  ASSERT_TRUE(cv::imwrite((d / "bark.png").string(), texture));
+  std::ofstream(d / "post.obj") << "mtllib post.mtl\nv 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\n"
+                                   "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                   "usemtl photo_bark\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"
+                                   "usemtl painted\nf 1/1 3/3 2/2\n";
+  std::ofstream(d / "post.mtl") << "newmtl photo_bark\nKd 0.8 0.7 0.6\nmap_Kd bark.png\n"
+                                   "newmtl painted\nKd 0.1 0.2 0.3\n";
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "post", "file": "post.obj", "kind": "stump", "class": "stump",
+     "parts": {"photo_bark": "stump", "painted": "stump"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  const AssetLibrary lib = load_library(d / "library.json");
+  ASSERT_EQ(lib.assets.size(), 1u);
+  const Mesh& m = lib.assets[0].lods[0];
+  ASSERT_EQ(m.parts.size(), 2u);
+  const BaseColor* bark = m.parts[0].base_color.get();
+  const BaseColor* painted = m.parts[1].base_color.get();
+  ASSERT_NE(bark, nullptr);
+  ASSERT_NE(painted, nullptr);
+  EXPECT_EQ(bark->width, 2);
+  EXPECT_EQ(bark->height, 1);
+  EXPECT_EQ(bark->srgb, (std::vector<uint8_t>{255, 0, 0, 0, 0, 255}));  // RGB order
+  EXPECT_TRUE(bark->factor.isApprox(Vec3f(0.8f, 0.7f, 0.6f)));
+  EXPECT_EQ(painted->width, 0);  // colour only
+  EXPECT_TRUE(painted->factor.isApprox(Vec3f(0.1f, 0.2f, 0.3f)));
+  EXPECT_EQ(m.parts[0].material, Material::Wood);  // the role's material still decides translucency
+}
+
+TEST_F(LoadLibraryTest, CoreMaterialNamesKeepTheProceduralLook) {
+  const AssetLibrary loaded = load_library(*dir_ / "library.json");  // our glb files name core materials
+  for (const Asset& a : loaded.assets)
+    for (const Mesh& lod : a.lods)
+      for (const MeshPart& p : lod.parts) EXPECT_EQ(p.base_color, nullptr) << a.name;
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 #include "raster_test_scenes.hpp"
 #include "render/instance_cull.hpp"
 #include "render/raster_conventions.hpp"
+#include "render/lighting.hpp"
 #include "render/renderer.hpp"
+#include "render/shade.hpp"
 
 namespace silva::render {
 namespace {
@@ -59,6 +61,55 @@ TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
     }
   EXPECT_GT(opaque, 500);
   EXPECT_GT(holes, 500);
+}
+
+TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {
+  const Camera cam = screen_camera(128, 96);
+  auto colour = std::make_shared<BaseColor>();
+  colour->width = 4;
+  colour->height = 1;
+  colour->srgb = {255, 0, 0, 255, 0, 0, 0, 0, 255, 0, 0, 255};  // red, red, blue, blue
+  colour->factor = Vec3f(0.5f, 1.0f, 1.0f);
+  // A frontal card at z = 2 over x, y in [-1.5, 1.5]; u runs with x from 0 to 1.
+  Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::Obstacle);
+  card.uvs = {Vec2f(0, 0), Vec2f(0, 1), Vec2f(1, 1), Vec2f(1, 0)};
+  card.parts[0].base_color = colour;
+  OwnedScene s;
+  s.add_instance(s.add_mesh(std::move(card)), Affine3f::Identity(), 7);
+  s.add_instance(s.add_mesh(test::make_quad({-9, -9, 5}, {-9, 9, 5}, {9, 9, 5}, {9, -9, 5}, Role::Ground)));
+  Renderer renderer;
+  GBuffer g;
+  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  std::vector<uint8_t> rgb;
+  shade_rgb({g, cam, preset_day(), nullptr, 1, "random", 0, 0.0f}, rgb);
+  int red = 0, blue = 0, procedural = 0;
+  for (int v = 0; v < cam.height; ++v)
+    for (int u = 0; u < cam.width; ++u) {
+      const Vec3d d = cam.ray_direction(u, v) * 2.0;  // hit on the card plane z = 2
+      const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
+      const uint8_t* px = &rgb[3 * i];
+      if (std::abs(d.x()) > 1.5 || std::abs(d.y()) > 1.5) {
+        ASSERT_EQ(g.base_color[i], 0u) << "the procedural ground keeps its material";
+        ++procedural;
+        continue;
+      }
+      const double tu = (d.x() + 1.5) / 3.0;
+      if (tu > 0.14 && tu < 0.36) {  // between the two red texel centres: pure (0.5, 0, 0)
+        const Vec3f a = unpack_srgb8(g.base_color[i]);
+        ASSERT_NEAR(a.x(), 0.5f, 3e-3f);
+        ASSERT_EQ(a.y(), 0.0f);
+        ASSERT_EQ(a.z(), 0.0f);
+        ASSERT_GT(px[0], 2 * std::max(px[1], px[2]) + 10) << u << "," << v;
+        ++red;
+      } else if (tu > 0.64 && tu < 0.86) {  // between the blue texel centres: pure (0, 0, 1)
+        ASSERT_EQ(unpack_srgb8(g.base_color[i]), Vec3f(0, 0, 1));
+        ASSERT_GT(px[2], 2 * std::max(px[0], px[1]) + 10) << u << "," << v;
+        ++blue;
+      }
+    }
+  EXPECT_GT(red, 500);
+  EXPECT_GT(blue, 500);
+  EXPECT_GT(procedural, 500);
 }
 
 TEST(RasterLabels, PartRolesInstanceIdsAndVariationsSurvive) {
