@@ -4,14 +4,6 @@
 
 namespace silva {
 
-bool AlphaMask::opaque(float u, float v) const {
-  const float fu = u - std::floor(u), fv = v - std::floor(v);
-  int x = int(fu * float(width)), y = int(fv * float(height));
-  x = x >= width ? width - 1 : x;
-  y = y >= height ? height - 1 : y;
-  return float(alpha[size_t(y) * size_t(width) + size_t(x)]) >= cutoff * 255.0f;
-}
-
 AABB Mesh::bounds() const {
   AABB b;
   for (const auto& p : positions) b.extend(p);

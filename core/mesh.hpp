@@ -18,8 +18,20 @@ struct AlphaMask {
   int height = 0;                ///< Texels down (row 0 is v in [0, 1/height)).
   std::vector<uint8_t> alpha;    ///< width*height alpha values, row-major.
   float cutoff = 0.5f;           ///< A texel is opaque when alpha/255 >= cutoff.
-  /// Nearest-texel lookup with repeat wrap: true when (u, v) is opaque.
-  bool opaque(float u, float v) const;
+  /// Nearest-texel lookup with repeat wrap: true when (u, v) is opaque (|u|, |v| < 2^31).
+  bool opaque(float u, float v) const {
+    const size_t i = size_t(texel(v, height)) * size_t(width) + size_t(texel(u, width));
+    return float(alpha[i]) >= cutoff * 255.0f;
+  }
+
+ private:
+  /// Texel index of coordinate t wrapped into [0, 1): floor without a libm call (hot in the raster loop).
+  static int texel(float t, int n) {
+    float f = float(int(t));
+    if (f > t) f -= 1.0f;
+    const int i = int((t - f) * float(n));
+    return i >= n ? n - 1 : i;
+  }
 };
 
 /// A contiguous range of triangles sharing a role, material and mask.

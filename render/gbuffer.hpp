@@ -40,7 +40,7 @@ struct GBuffer {
 ///     [origin_x + x*texel_size, origin_x + (x+1)*texel_size) and y in
 ///     [origin_y + y*texel_size, origin_y + (y+1)*texel_size); its sample is the centre.
 ///     depth[y*width + x] is that texel. The texels cover the light-space footprint of the
-///     region the map was built for (square texels; width == height).
+///     region the map was built for (square texels; width and height may differ).
 ///   - depth = light-space z of the nearest surface (any facing) along +z through the texel
 ///     centre; +inf where no surface is hit. A world point p is lit when
 ///     (world_to_light * p).z <= depth at its texel (plus a bias of the shader's choice).

@@ -38,6 +38,22 @@ inline double det_exp(double x) {
   return p * std::bit_cast<double>(bits);
 }
 
+/// e^x in float for per-pixel use: x = k ln2 + r, |r| <= ln2/2, e^r by its degree-7 Taylor
+/// polynomial (relative error below 3e-7), scaled exactly by 2^k; 0 below -87, clamped above 88.
+inline float det_expf(float x) {
+  constexpr float kLn2Hi = 0.693145751953125f, kLn2Lo = 1.428606765330187e-06f;  // hi has 16 bits: k*hi exact
+  constexpr float kInvLn2 = 1.44269504088896341f;
+  if (x > 88.0f) x = 88.0f;
+  if (x < -87.0f) return 0.0f;
+  constexpr float kRound = 12582912.0f;  // 1.5 * 2^23: round to nearest even
+  const float k = (x * kInvLn2 + kRound) - kRound;
+  const float r = (x - k * kLn2Hi) - k * kLn2Lo;
+  float p = float(kInverseFactorials.v[7]);
+  for (int n = 6; n >= 0; --n) p = p * r + float(kInverseFactorials.v[n]);
+  const uint32_t bits = uint32_t(int32_t(k) + 127) << 23;  // 2^k, k in [-126, 127]
+  return p * std::bit_cast<float>(bits);
+}
+
 /// Natural log of x > 0: x = m 2^e with m in [sqrt(1/2), sqrt(2)), log m = 2 atanh((m-1)/(m+1))
 /// by its odd series (relative error below 1e-15), plus e ln2.
 inline double det_log(double x) {

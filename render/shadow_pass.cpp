@@ -1,5 +1,6 @@
 #include "render/shadow_pass.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -37,9 +38,12 @@ ShadowMap shadow_map_frame(const Vec3d& direction_to_sun, const AABB& region, in
     min_y = std::min(min_y, ly);
     max_y = std::max(max_y, ly);
   }
+  // Square texels; the longer side of the footprint gets `resolution` of them.
   const double extent = std::max({max_x - min_x, max_y - min_y, 1e-6});
-  map.width = map.height = resolution;
   map.texel_size = extent / double(resolution);
+  const auto texels = [&](double side) { return std::clamp(int(std::ceil(side / map.texel_size - 1e-9)), 1, resolution); };
+  map.width = texels(max_x - min_x);
+  map.height = texels(max_y - min_y);
   map.origin_x = min_x;
   map.origin_y = min_y;
   return map;

@@ -9,8 +9,9 @@
 namespace silva::render {
 
 /// A shadow map's frame for a sun direction (towards the sun, any length > 0) covering the
-/// world box `region` at resolution x resolution texels (convention in gbuffer.hpp); depth is
-/// left empty. Throws InputError for a zero or non-finite direction, an empty region or a
+/// light-space footprint of the world box `region` with square texels, `resolution` of them
+/// along the footprint's longer side and as few as cover the shorter one (convention in
+/// gbuffer.hpp); depth is left empty. Throws InputError for a zero or non-finite direction, an empty region or a
 /// resolution outside [1, kMaxRasterSize].
 ShadowMap shadow_map_frame(const Vec3d& direction_to_sun, const AABB& region, int resolution);
 

@@ -22,10 +22,11 @@ float HeightFog::amount(const Vec3f& point) const {
   const Vec3f d = point - camera_;
   const float length = d.norm();
   const float k = falloff_ * d.z();
-  // Mean of exp(-falloff * dz * s) over s in [0, 1]; 1 for a level ray.
-  const float height_factor = std::abs(k) < 1e-4f ? 1.0f : float((1.0 - det_exp(-double(k))) / double(k));
+  // Mean of exp(-falloff * dz * s) over s in [0, 1]: (1 - e^-k) / k, by its series near k = 0.
+  const float height_factor = std::abs(k) < 1e-2f ? 1.0f - k * (0.5f - k * (1.0f / 6.0f))
+                                                  : (1.0f - det_expf(-k)) / k;
   const float optical_depth = camera_density_ * length * height_factor;
-  return 1.0f - float(det_exp(-double(optical_depth)));
+  return 1.0f - det_expf(-optical_depth);
 }
 
 Vec3f HeightFog::color(const Vec3f& dir) const {

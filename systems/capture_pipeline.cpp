@@ -3,7 +3,6 @@
 #include <tbb/parallel_pipeline.h>
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -84,27 +83,6 @@ std::vector<ChunkCoord> chunks_for_view(const WorldContext& ctx, const Camera& c
   return coords;
 }
 
-/// Box around the camera whose casters the sun shadow map covers.
-AABB shadow_region(const WorldContext& ctx, const Camera& camera) {
-  const Vec3d p = camera.position();
-  const double half = 0.5 * kShadowExtent;
-  const float ground = terrain_height(ctx.terrain, p.x(), p.y());
-  const float relief = float(ctx.config.terrain.max_elevation) + 1.0f;
-  AABB box;
-  box.extend(Vec3f(float(p.x() - half), float(p.y() - half), ground - 2.0f * relief));
-  box.extend(Vec3f(float(p.x() + half), float(p.y() + half), ground + 2.0f * relief + 40.0f));
-  return box;
-}
-
-}  // namespace
-
-int shadow_resolution(const Camera& camera) {
-  const unsigned longer = unsigned(std::max(camera.width, camera.height));
-  return std::clamp(int(std::bit_ceil(longer)), kMinShadowResolution, kShadowResolution);
-}
-
-namespace {
-
 /// Streams, prepares and renders one frame (G-buffer + shadow map); timings into `work`.
 void render_into(const CaptureJob& job, ChunkCache& cache, const SceneBuilder& builder, render::Renderer& renderer,
                  FrameWork& work) {
@@ -131,8 +109,8 @@ void render_into(const CaptureJob& job, ChunkCache& cache, const SceneBuilder& b
   if (job.outputs.has(io::OutputType::Rgb)) {
     t = Clock::now();
     const Vec3f sun = render::sun_direction(job.preset);
-    renderer.render_shadow_map(scene.scene, sun.cast<double>(), shadow_region(ctx, f.camera), shadow_resolution(f.camera),
-                               options, work.shadow);
+    const ShadowPlan plan = plan_shadow(ctx, f.camera, sun.cast<double>());
+    renderer.render_shadow_map(scene.scene, sun.cast<double>(), plan.region, plan.resolution, options, work.shadow);
     work.shadow_s = seconds_since(t);
   }
 }

@@ -13,19 +13,10 @@
 #include "systems/chunk_cache.hpp"
 #include "systems/plan_captures.hpp"
 #include "systems/scene_builder.hpp"
+#include "systems/shadow_plan.hpp"
 
 namespace silva::world {
 
-/// Side of the square region around the camera whose casters the sun shadow map covers (metres).
-inline constexpr double kShadowExtent = 120.0;
-/// Largest shadow map resolution (texels per side), used from 1025 output pixels across up.
-inline constexpr int kShadowResolution = 2048;
-/// Smallest shadow map resolution, for thumbnails and tests.
-inline constexpr int kMinShadowResolution = 256;
-
-/// Shadow map texels per side for a view: the power of two at or above the image's longer side,
-/// within [kMinShadowResolution, kShadowResolution], so shadow detail follows image detail.
-int shadow_resolution(const Camera& camera);
 /// Frames in flight at once (rendering, shading/encoding, writing).
 inline constexpr size_t kFramesInFlight = 3;
 

@@ -1,12 +1,14 @@
 // Shadow map: a floating quad's known footprint on the ground, in light space.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "core/error.hpp"
 #include "raster_test_scenes.hpp"
 #include "render/renderer.hpp"
+#include "render/shadow_pass.hpp"
 
 namespace silva::render {
 namespace {
@@ -22,6 +24,24 @@ float texel_depth(const ShadowMap& m, const Vec3d& p) {
   return m.depth[size_t(y) * size_t(m.width) + size_t(x)];
 }
 
+TEST(RasterShadow, OblongFootprintGetsAnOblongMapOfSquareTexels) {
+  AABB region;  // 40 m x 10 m, flat, seen from straight above
+  region.extend(Vec3f(-20, -5, 0));
+  region.extend(Vec3f(20, 5, 0));
+  const ShadowMap map = shadow_map_frame(Vec3d(0, 0, 1), region, 256);
+  EXPECT_DOUBLE_EQ(map.texel_size, 40.0 / 256.0);
+  EXPECT_EQ(std::max(map.width, map.height), 256);
+  EXPECT_EQ(std::min(map.width, map.height), 64);  // 10 m / (40 m / 256)
+  for (int c = 0; c < 4; ++c) {  // every corner of the region lies on the texel grid
+    const Vec3d p((c & 1) ? 20 : -20, (c & 2) ? 5 : -5, 0);
+    const Vec3d l = map.world_to_light.topLeftCorner<3, 3>() * p;
+    EXPECT_GE(l.x(), map.origin_x - 1e-9);
+    EXPECT_LE(l.x(), map.origin_x + map.width * map.texel_size + 1e-9);
+    EXPECT_GE(l.y(), map.origin_y - 1e-9);
+    EXPECT_LE(l.y(), map.origin_y + map.height * map.texel_size + 1e-9);
+  }
+}
+
 TEST(RasterShadow, FloatingQuadCastsItsFootprintOnTheGround) {
   test::OwnedScene s;
   s.add_instance(s.add_mesh(test::make_quad({-10, -10, 0}, {10, -10, 0}, {10, 10, 0}, {-10, 10, 0}, Role::Ground)));
@@ -32,9 +52,8 @@ TEST(RasterShadow, FloatingQuadCastsItsFootprintOnTheGround) {
   region.extend(Vec3f(10, 10, 2));
   Renderer renderer;
   const ShadowMap map = renderer.render_shadow_map(s.scene, to_sun, region, 256, RenderOptions{});
-  ASSERT_EQ(map.width, 256);
-  ASSERT_EQ(map.height, 256);
-  ASSERT_EQ(map.depth.size(), 256u * 256u);
+  ASSERT_EQ(std::max(map.width, map.height), 256);  // the footprint's longer side
+  ASSERT_EQ(map.depth.size(), size_t(map.width) * size_t(map.height));
   // Light space is a rotation with +z pointing away from the sun.
   const Mat3d r = map.world_to_light.topLeftCorner<3, 3>();
   EXPECT_TRUE((r * r.transpose()).isIdentity(1e-12));

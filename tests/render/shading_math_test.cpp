@@ -13,6 +13,14 @@ TEST(ShadingMath, ExpMatchesLibmClosely) {
   EXPECT_EQ(det_exp(-800.0), 0.0);
 }
 
+TEST(ShadingMath, FloatExpMatchesLibmClosely) {
+  for (float x = -80.0f; x <= 80.0f; x += 0.173f)
+    EXPECT_NEAR(double(det_expf(x)) / std::exp(double(x)), 1.0, 4e-7) << x;
+  EXPECT_EQ(det_expf(0.0f), 1.0f);
+  EXPECT_EQ(det_expf(-100.0f), 0.0f);
+  EXPECT_TRUE(std::isfinite(det_expf(500.0f)));
+}
+
 TEST(ShadingMath, LogMatchesLibmClosely) {
   for (double x = 1e-12; x < 1e6; x *= 1.7) EXPECT_NEAR(det_log(x), std::log(x), 4e-15 * std::max(1.0, std::abs(std::log(x)))) << x;
   EXPECT_EQ(det_log(1.0), 0.0);
