@@ -21,19 +21,13 @@ struct RasterTri {
   uint32_t alpha = kNoAlpha;  ///< Index of the AlphaAttrib in the same store, or kNoAlpha.
 };
 
-/// What alpha testing needs at a pixel: barycentric planes, vertex uvs and the mask.
+/// What alpha testing needs at a pixel: barycentric planes, vertex uvs and the mask. At pixel
+/// (x, y): b1 = n1.at/den.at, b2 = n2.at/den.at, uv = uv0 + b1 (uv1 - uv0) + b2 (uv2 - uv0) in
+/// double, then mask->opaque(float(u), float(v)) (nearest texel, repeat wrap).
 struct AlphaAttrib {
   PixelPlane n1, n2, den;       ///< b1 = n1/den, b2 = n2/den at pixel centres.
   Vec2f uv0, uv1, uv2;          ///< Vertex texture coordinates.
   const AlphaMask* mask = nullptr;  ///< Non-owning; the Scene outlives the pass.
-  /// True when the mask is opaque at pixel (x, y)'s centre (nearest texel, repeat wrap).
-  bool opaque_at(double x, double y) const {
-    const double d = den.at(x, y);
-    const double b1 = n1.at(x, y) / d, b2 = n2.at(x, y) / d;
-    const double u = double(uv0.x()) + b1 * double(uv1.x() - uv0.x()) + b2 * double(uv2.x() - uv0.x());
-    const double v = double(uv0.y()) + b1 * double(uv1.y() - uv0.y()) + b2 * double(uv2.y() - uv0.y());
-    return mask->opaque(float(u), float(v));
-  }
 };
 
 }  // namespace silva::render

@@ -30,21 +30,42 @@ double block_minimum(const TileScratch& s, const TileJob& job, int bx, int by) {
   return m;
 }
 
-/// Resolves lanes with a depth tie or an alpha mask one by one; returns the writes made.
-uint64_t write_lanes_scalar(const RasterTri& t, const AlphaAttrib* alpha, const double* dv, const uint8_t* win_bits,
-                            const uint8_t* tie_bits, size_t lanes, double px0, double py, double* dp, uint64_t* kp) {
+/// Resolves lanes with a depth tie one by one (lower key wins); returns the writes made.
+uint64_t write_lanes_scalar(const RasterTri& t, const double* dv, const uint8_t* win_bits, const uint8_t* tie_bits,
+                            size_t lanes, double* dp, uint64_t* kp) {
   uint64_t writes = 0;
   for (size_t k = 0; k < lanes; ++k) {
     const bool win = (win_bits[k / 8] >> (k % 8)) & 1;
     const bool tie = (tie_bits[k / 8] >> (k % 8)) & 1;
-    bool w = win || (tie && t.key < kp[k]);
-    if (w && alpha) w = alpha->opaque_at(px0 + double(k), py);
-    if (!w) continue;
+    if (!(win || (tie && t.key < kp[k]))) continue;
     dp[k] = dv[k];
     kp[k] = t.key;
     ++writes;
   }
   return writes;
+}
+
+/// Lanes of `live` whose pixel centre (x = vx, y = py) is opaque in the triangle's alpha mask:
+/// barycentrics and uvs on SIMD lanes in AlphaAttrib's documented operation order,
+/// the texel lookup per live lane.
+template <class D, class V, class M>
+M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
+  const auto plane = [&](const PixelPlane& p) { return hn::Add(hn::Set(d, p.c + p.b * py), hn::Mul(hn::Set(d, p.a), vx)); };
+  const auto den = plane(a.den);
+  const auto b1 = hn::Div(plane(a.n1), den), b2 = hn::Div(plane(a.n2), den);
+  const auto coord = [&](float c0, float c1, float c2) {
+    return hn::Add(hn::Add(hn::Set(d, double(c0)), hn::Mul(b1, hn::Set(d, double(c1 - c0)))),
+                   hn::Mul(b2, hn::Set(d, double(c2 - c0))));
+  };
+  alignas(64) double u[kDepthBlockSize], v[kDepthBlockSize];
+  hn::Store(coord(a.uv0.x(), a.uv1.x(), a.uv2.x()), d, u);
+  hn::Store(coord(a.uv0.y(), a.uv1.y(), a.uv2.y()), d, v);
+  uint8_t live_bits[8] = {}, opaque_bits[8] = {};
+  hn::StoreMaskBits(d, live, live_bits);
+  for (size_t k = 0; k < hn::Lanes(d); ++k)
+    if (((live_bits[k / 8] >> (k % 8)) & 1) && a.mask->opaque(float(u[k]), float(v[k])))
+      opaque_bits[k / 8] = uint8_t(opaque_bits[k / 8] | (1u << (k % 8)));
+  return hn::LoadMaskBits(d, opaque_bits);
 }
 
 /// Rasterises one triangle into the blocks of the tile it overlaps.
@@ -93,9 +114,15 @@ void raster_triangle(const RasterTri& t, const AlphaAttrib* alpha, const TileJob
           double* dp = s.depth.data() + off;
           uint64_t* kp = s.key.data() + off;
           const auto stored = hn::LoadU(d, dp);
-          const auto win = hn::And(in, hn::Gt(depth, stored));
-          const auto tie = hn::And(in, hn::Eq(depth, stored));
-          if (alpha == nullptr && hn::AllFalse(d, tie)) {
+          auto win = hn::And(in, hn::Gt(depth, stored));
+          auto tie = hn::And(in, hn::Eq(depth, stored));
+          if (alpha != nullptr) {
+            if (hn::AllFalse(d, hn::Or(win, tie))) continue;
+            const auto opaque = opaque_lanes(d, *alpha, vx, py, hn::Or(win, tie));
+            win = hn::And(win, opaque);
+            tie = hn::And(tie, opaque);
+          }
+          if (hn::AllFalse(d, tie)) {
             if (hn::AllFalse(d, win)) continue;
             hn::BlendedStore(depth, win, d, dp);
             hn::BlendedStore(key, hn::RebindMask(du, win), du, kp);
@@ -106,7 +133,7 @@ void raster_triangle(const RasterTri& t, const AlphaAttrib* alpha, const TileJob
           hn::Store(depth, d, dv);
           hn::StoreMaskBits(d, win, win_bits);
           hn::StoreMaskBits(d, tie, tie_bits);
-          const uint64_t n = write_lanes_scalar(t, alpha, dv, win_bits, tie_bits, N, px0, py, dp, kp);
+          const uint64_t n = write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp);
           counters.writes += n;
           wrote = wrote || n > 0;
         }
