@@ -1,10 +1,12 @@
 #include "render/edge_aa.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace silva::render {
 
@@ -19,19 +21,29 @@ constexpr float kMaxBlend = 0.375f;
 /// Luma of an RGB byte triple (Rec. 601-like integer weights, exact in float).
 float luma(const uint8_t* p) { return (2.0f * float(p[0]) + 5.0f * float(p[1]) + float(p[2])) * 0.125f; }
 
-/// Filters one interior pixel at (x, y) into `dst`.
-void filter_pixel(const uint8_t* src, int width, int x, int y, uint8_t* dst) {
+/// Lumas of the rows above, at and below the pixel being filtered.
+struct LumaRows {
+  const float* up;
+  const float* mid;
+  const float* down;
+};
+
+/// Filters one interior pixel at (x, y) into `dst`; `rows` hold luma() of rows y - 1, y, y + 1.
+void filter_pixel(const uint8_t* src, const LumaRows& rows, int width, int x, int y, uint8_t* dst) {
   const size_t stride = size_t(width) * 3;
   const uint8_t* c = src + size_t(y) * stride + size_t(x) * 3;
   const uint8_t *n = c - stride, *s = c + stride, *e = c + 3, *w = c - 3;
-  const float lc = luma(c), ln = luma(n), ls = luma(s), le = luma(e), lw = luma(w);
+  const float* l = rows.mid + x;
+  const float* ln_row = rows.up + x;
+  const float* ls_row = rows.down + x;
+  const float lc = l[0], ln = ln_row[0], ls = ls_row[0], le = l[1], lw = l[-1];
   const float hi = std::max({lc, ln, ls, le, lw}), lo = std::min({lc, ln, ls, le, lw});
   const float contrast = hi - lo;
   if (contrast < std::max(kMinContrast, kRelativeContrast * hi)) {
     std::copy(c, c + 3, dst);
     return;
   }
-  const float lne = luma(n + 3), lnw = luma(n - 3), lse = luma(s + 3), lsw = luma(s - 3);
+  const float lne = ln_row[1], lnw = ln_row[-1], lse = ls_row[1], lsw = ls_row[-1];
   // Luma change across rows (a horizontal edge) vs across columns (a vertical edge).
   const float across_rows = 2.0f * std::abs(ln + ls - 2.0f * lc) + std::abs(lne + lse - 2.0f * le) +
                             std::abs(lnw + lsw - 2.0f * lw);
@@ -63,16 +75,30 @@ void smooth_edges(const std::vector<uint8_t>& rgb, int width, int height, std::v
     throw std::invalid_argument("smooth_edges: image buffer does not match its size");
   out.resize(rgb.size());
   const size_t stride = size_t(width) * 3;
-  tbb::parallel_for(0, height, [&](int y) {
-    const uint8_t* row = rgb.data() + size_t(y) * stride;
-    uint8_t* dst = out.data() + size_t(y) * stride;
-    if (y == 0 || y == height - 1 || width < 3) {
-      std::copy(row, row + stride, dst);
-      return;
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& range) {
+    // Luma of three consecutive rows, rolled down the range (each row's luma computed once).
+    std::vector<float> ring[3];
+    const auto fill = [&](std::vector<float>& l, int y) {
+      l.resize(size_t(width));
+      const uint8_t* row = rgb.data() + size_t(std::clamp(y, 0, height - 1)) * stride;
+      for (int x = 0; x < width; ++x) l[size_t(x)] = luma(row + size_t(x) * 3);
+    };
+    fill(ring[0], range.begin() - 1);
+    fill(ring[1], range.begin());
+    for (int y = range.begin(); y != range.end(); ++y) {
+      fill(ring[(y - range.begin() + 2) % 3], y + 1);
+      const LumaRows rows{ring[(y - range.begin()) % 3].data(), ring[(y - range.begin() + 1) % 3].data(),
+                          ring[(y - range.begin() + 2) % 3].data()};
+      const uint8_t* row = rgb.data() + size_t(y) * stride;
+      uint8_t* dst = out.data() + size_t(y) * stride;
+      if (y == 0 || y == height - 1 || width < 3) {
+        std::copy(row, row + stride, dst);
+        continue;
+      }
+      std::copy(row, row + 3, dst);
+      for (int x = 1; x + 1 < width; ++x) filter_pixel(rgb.data(), rows, width, x, y, dst + size_t(x) * 3);
+      std::copy(row + stride - 3, row + stride, dst + stride - 3);
     }
-    std::copy(row, row + 3, dst);
-    for (int x = 1; x + 1 < width; ++x) filter_pixel(rgb.data(), width, x, y, dst + size_t(x) * 3);
-    std::copy(row + stride - 3, row + stride, dst + stride - 3);
   });
 }
 
