@@ -64,7 +64,7 @@ void filter_pixel(const uint8_t* src, const LumaRows& rows, int width, int x, in
   const float blend = kMaxBlend * eased;
   for (int k = 0; k < 3; ++k) {
     const float v = float(c[k]) + blend * (float(other[k]) - float(c[k]));
-    dst[k] = uint8_t(int(v + 0.5f));  // v >= 0: rounds half up
+    dst[k] = uint8_t(int(v + 0.5f));  // NOLINT(bugprone-incorrect-roundings): v >= 0, round half up
   }
 }
 

@@ -41,7 +41,7 @@ TEST(ConfigPrint, TomlHasEveryKeyAndUserPresets) {
       "a.toml");
   const std::string text = config_to_toml(loaded);
   for (const ConfigKey& key : config_schema()) {
-    EXPECT_NE(text.find("\n" + std::string(key.leaf()) + " = "), std::string::npos) << key.name;
+    EXPECT_NE(text.find(std::string("\n").append(key.leaf()).append(" = ")), std::string::npos) << key.name;
   }
   const LoadedConfig again = parse_config_text(text, "printed");
   EXPECT_EQ(again.config.lighting.time_of_day, "my noon");

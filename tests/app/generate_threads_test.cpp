@@ -14,7 +14,7 @@ TEST(GenerateThreads, OneAndTwoThreadsWriteIdenticalFiles) {
   const fs::path dir = fresh_test_dir();
   std::map<std::string, std::string> files[2];
   for (int threads : {1, 2}) {
-    const fs::path out = dir / ("t" + std::to_string(threads));
+    const fs::path out = dir / std::string("t").append(std::to_string(threads));
     std::vector<std::string> args = tiny_run_args(out, 31337, kAllTypes);
     args.insert(args.end(), {"--threads", std::to_string(threads)});
     const ProcessResult r = run_silva(args, dir);

@@ -25,6 +25,17 @@ Camera screen_camera(int w, int h) {
   return c;
 }
 
+/// G-buffer of `card` (instance id 7) in front of a ground quad at z = 5 filling the view.
+GBuffer render_card_over_ground(const Camera& cam, Mesh card) {
+  OwnedScene s;
+  s.add_instance(s.add_mesh(std::move(card)), Affine3f::Identity(), 7);
+  s.add_instance(s.add_mesh(test::make_quad({-9, -9, 5}, {-9, 9, 5}, {9, 9, 5}, {9, -9, 5}, Role::Ground)));
+  Renderer renderer;
+  GBuffer g;
+  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  return g;
+}
+
 TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
   const Camera cam = screen_camera(128, 96);
   auto mask = std::make_shared<AlphaMask>();
@@ -37,12 +48,7 @@ TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
   Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::TreeCanopy,
                               false, mask);
   card.uvs = {Vec2f(0, 0), Vec2f(0, 2), Vec2f(2, 2), Vec2f(2, 0)};
-  OwnedScene s;
-  s.add_instance(s.add_mesh(std::move(card)), Affine3f::Identity(), 7);
-  s.add_instance(s.add_mesh(test::make_quad({-9, -9, 5}, {-9, 9, 5}, {9, 9, 5}, {9, -9, 5}, Role::Ground)));
-  Renderer renderer;
-  GBuffer g;
-  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  const GBuffer g = render_card_over_ground(cam, std::move(card));
   int opaque = 0, holes = 0;
   for (int v = 0; v < cam.height; ++v)
     for (int u = 0; u < cam.width; ++u) {
@@ -74,12 +80,7 @@ TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {
   Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::Obstacle);
   card.uvs = {Vec2f(0, 0), Vec2f(0, 1), Vec2f(1, 1), Vec2f(1, 0)};
   card.parts[0].base_color = colour;
-  OwnedScene s;
-  s.add_instance(s.add_mesh(std::move(card)), Affine3f::Identity(), 7);
-  s.add_instance(s.add_mesh(test::make_quad({-9, -9, 5}, {-9, 9, 5}, {9, 9, 5}, {9, -9, 5}, Role::Ground)));
-  Renderer renderer;
-  GBuffer g;
-  renderer.render_gbuffer(s.scene, cam, RenderOptions{}, g);
+  const GBuffer g = render_card_over_ground(cam, std::move(card));
   std::vector<uint8_t> rgb;
   shade_rgb({g, cam, preset_day(), nullptr, 1, "random", 0, 0.0f}, rgb);
   int red = 0, blue = 0, procedural = 0;
