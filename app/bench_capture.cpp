@@ -65,6 +65,7 @@ std::pair<std::vector<world::PlannedFrame>, size_t> autopilot_frames(const WarmW
   const size_t n = all.size();
   if (count <= 0 || size_t(count) >= n) return {std::move(all), n};
   std::vector<world::PlannedFrame> subset;
+  subset.reserve(size_t(count));
   for (int k = 0; k < count; ++k) subset.push_back(all[size_t(k) * n / size_t(count)]);
   return {std::move(subset), n};
 }
