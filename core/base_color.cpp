@@ -4,18 +4,17 @@
 #include <array>
 #include <cmath>
 
+#include "core/det_math.hpp"
+
 namespace silva {
 
 namespace {
-
-/// The sRGB decoding curve (IEC 61966-2-1) for s in [0, 1].
-double srgb_curve(double s) { return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4); }
 
 /// Linear values of the 256 sRGB codes.
 const std::array<float, 256>& decode_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
-    for (int c = 0; c < 256; ++c) t[size_t(c)] = float(srgb_curve(double(c) / 255.0));
+    for (int c = 0; c < 256; ++c) t[size_t(c)] = float(srgb_to_linear(double(c) / 255.0));
     return t;
   }();
   return table;
@@ -39,6 +38,10 @@ int wrap(int i, int n) {
 }
 
 }  // namespace
+
+double srgb_to_linear(double s) {
+  return s <= 0.04045 ? s / 12.92 : det_exp(2.4 * det_log((s + 0.055) / 1.055));
+}
 
 float srgb8_to_linear(uint8_t code) { return decode_table()[code]; }
 

@@ -19,7 +19,10 @@ struct BaseColor {
   Vec3f albedo(float u, float v) const;
 };
 
-/// Linear value of an 8-bit sRGB code (exact sRGB curve, table lookup).
+/// Linear value of an sRGB-encoded value s in [0, 1] (IEC 61966-2-1 curve, deterministic exp/log).
+double srgb_to_linear(double s);
+
+/// Linear value of an 8-bit sRGB code (srgb_to_linear, table lookup).
 float srgb8_to_linear(uint8_t code);
 
 /// Linear RGB in [0, 1] (clamped) -> packed sRGB8 R | G << 8 | B << 16 | 0xff << 24 (never 0).

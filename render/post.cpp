@@ -5,8 +5,9 @@
 #include <cmath>
 #include <memory>
 
+#include "core/base_color.hpp"
+#include "core/det_math.hpp"
 #include "core/rng.hpp"
-#include "render/shading_math.hpp"
 
 namespace silva::render {
 
@@ -35,11 +36,6 @@ double inverse_normal_cdf(double p) {
   const double q = p - 0.5, r = q * q;
   return (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
          (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0);
-}
-
-/// Display-linear value of an sRGB-encoded value s in [0, 1].
-double srgb_to_linear(double s) {
-  return s <= 0.04045 ? s / 12.92 : det_exp(2.4 * det_log((s + 0.055) / 1.055));
 }
 
 /// The 65536 bin-centre quantiles, normalised to mean 0 and variance 1.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/shading_math.hpp"
+#include "core/det_math.hpp"
 
 namespace silva::render {
 

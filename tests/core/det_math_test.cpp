@@ -2,18 +2,18 @@
 
 #include <cmath>
 
-#include "render/shading_math.hpp"
+#include "core/det_math.hpp"
 
-namespace silva::render {
+namespace silva {
 namespace {
 
-TEST(ShadingMath, ExpMatchesLibmClosely) {
+TEST(DetMath, ExpMatchesLibmClosely) {
   for (double x = -60.0; x <= 60.0; x += 0.37) EXPECT_NEAR(det_exp(x) / std::exp(x), 1.0, 4e-15) << x;
   EXPECT_EQ(det_exp(0.0), 1.0);
   EXPECT_EQ(det_exp(-800.0), 0.0);
 }
 
-TEST(ShadingMath, FloatExpMatchesLibmClosely) {
+TEST(DetMath, FloatExpMatchesLibmClosely) {
   for (float x = -80.0f; x <= 80.0f; x += 0.173f)
     EXPECT_NEAR(double(det_expf(x)) / std::exp(double(x)), 1.0, 4e-7) << x;
   EXPECT_EQ(det_expf(0.0f), 1.0f);
@@ -21,11 +21,11 @@ TEST(ShadingMath, FloatExpMatchesLibmClosely) {
   EXPECT_TRUE(std::isfinite(det_expf(500.0f)));
 }
 
-TEST(ShadingMath, LogMatchesLibmClosely) {
+TEST(DetMath, LogMatchesLibmClosely) {
   for (double x = 1e-12; x < 1e6; x *= 1.7) EXPECT_NEAR(det_log(x), std::log(x), 4e-15 * std::max(1.0, std::abs(std::log(x)))) << x;
   EXPECT_EQ(det_log(1.0), 0.0);
   EXPECT_NEAR(det_exp(det_log(0.3)), 0.3, 1e-15);
 }
 
 }  // namespace
-}  // namespace silva::render
+}  // namespace silva

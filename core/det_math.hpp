@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace silva::render {
+namespace silva {
 
 /// 1/n! for n = 0..13, evaluated at compile time (correctly rounded divisions).
 inline constexpr auto kInverseFactorials = [] {
@@ -72,4 +72,4 @@ inline double det_log(double x) {
   return 2.0 * sum + double(e) * 0.693147180559945309417;
 }
 
-}  // namespace silva::render
+}  // namespace silva
