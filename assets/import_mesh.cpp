@@ -139,6 +139,9 @@ class AssetImporter {
                             (mat.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
                              mat.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS);
     if (ref.empty() && !has_colour) return nullptr;
+    const std::string key = ref + "|" + std::to_string(colour.r) + "," + std::to_string(colour.g) + "," +
+                            std::to_string(colour.b);
+    if (auto it = colours_.find(key); it != colours_.end()) return it->second;
     auto out = std::make_shared<BaseColor>();
     out->factor = Vec3f(colour.r, colour.g, colour.b);
     if (!ref.empty()) {
@@ -152,6 +155,7 @@ class AssetImporter {
       out->height = rgb.rows;
       for (int y = 0; y < rgb.rows; ++y) out->srgb.insert(out->srgb.end(), rgb.ptr<uint8_t>(y), rgb.ptr<uint8_t>(y) + rgb.cols * 3);
     }
+    colours_[key] = out;
     return out;
   }
 
@@ -206,6 +210,7 @@ class AssetImporter {
   Assimp::Importer importer_;
   const aiScene* scene_ = nullptr;
   std::map<std::string, std::shared_ptr<const AlphaMask>> masks_;
+  std::map<std::string, std::shared_ptr<const BaseColor>> colours_;  ///< By texture and factor: decoded once per file.
 };
 
 }  // namespace
