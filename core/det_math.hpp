@@ -1,11 +1,21 @@
 #pragma once
-/// @file exp and log built only from +, -, *, / and exact scaling by powers of two, so shading
+/// @file Rounding, exp and log built only from +, -, *, / and exact scaling by powers of two, so shading
 /// gives the same bits on every CPU (libm's exp/log may pick FMA code paths at run time).
 #include <bit>
 #include <cmath>
 #include <cstdint>
 
 namespace silva {
+
+/// std::llround without the libm call (hot in triangle setup): nearest integer, halves away from
+/// zero, for |x| < 2^52 (x - trunc(x) is then exact).
+inline int64_t round_half_away(double x) {
+  int64_t i = int64_t(x);  // truncates toward zero
+  const double frac = x - double(i);
+  if (frac >= 0.5) ++i;
+  if (frac <= -0.5) --i;
+  return i;
+}
 
 /// 1/n! for n = 0..13, evaluated at compile time (correctly rounded divisions).
 inline constexpr auto kInverseFactorials = [] {

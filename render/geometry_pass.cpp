@@ -6,7 +6,6 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
-#include "render/instance_cull.hpp"
 
 namespace silva::render {
 
@@ -44,6 +43,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
   const size_t vertex_count = mesh.positions.size();
   TriangleInput in;
+  in.inside_view = item.inside_view;
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
@@ -67,16 +67,23 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
 
 }  // namespace
 
-uint64_t build_draw_items(const Scene& scene, std::span<const uint32_t> instance_lod, std::vector<DrawItem>& items) {
+uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items) {
   items.clear();
+  std::vector<uint32_t> order;
+  for (uint32_t i = 0; i < uint32_t(scene.instances.size()); ++i)
+    if (selection.lod[i] != kCulled) order.push_back(i);
+  // Front to back, so the early depth test rejects more; the result never depends on this order.
+  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    return selection.nearness[a] != selection.nearness[b] ? selection.nearness[a] < selection.nearness[b] : a < b;
+  });
   uint64_t triangles = 0;
-  for (size_t i = 0; i < scene.instances.size(); ++i) {
-    if (instance_lod[i] == kCulled) continue;
-    const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[instance_lod[i]];
+  for (uint32_t i : order) {
+    const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[selection.lod[i]];
     const uint32_t n = uint32_t(mesh.triangle_count());
     triangles += n;
     for (uint32_t first = 0; first < n; first += kTrianglesPerItem)
-      items.push_back(DrawItem{uint32_t(i), instance_lod[i], first, std::min(kTrianglesPerItem, n - first)});
+      items.push_back(
+          DrawItem{i, selection.lod[i], first, std::min(kTrianglesPerItem, n - first), selection.inside[i] != 0});
   }
   return triangles;
 }

@@ -7,6 +7,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include "render/bin.hpp"
+#include "render/instance_cull.hpp"
 #include "render/scene.hpp"
 #include "render/triangle_setup.hpp"
 
@@ -21,14 +22,15 @@ struct DrawItem {
   uint32_t lod = 0;             ///< LOD drawn.
   uint32_t first_triangle = 0;  ///< First triangle of the run.
   uint32_t triangle_count = 0;  ///< Triangles in the run.
+  bool inside_view = false;     ///< The instance lies inside the view (no per-triangle frustum/clip tests).
 };
 
 /// Thread-local geometry stores, reused across frames.
 using GeometryStoreSet = tbb::enumerable_thread_specific<GeometryStore>;
 
-/// Splits every drawn instance (lod != kCulled) into items of at most kTrianglesPerItem
+/// Splits every drawn instance (lod != kCulled), nearest first, into items of at most kTrianglesPerItem
 /// triangles; returns the number of triangles submitted.
-uint64_t build_draw_items(const Scene& scene, std::span<const uint32_t> instance_lod, std::vector<DrawItem>& items);
+uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items);
 
 /// Transforms, culls, clips, sets up and bins every item's triangles in parallel into the
 /// calling threads' stores (each reset for `grid` first). Throws InputError for a mesh whose

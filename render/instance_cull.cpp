@@ -11,6 +11,9 @@ namespace silva::render {
 
 namespace {
 
+/// Relative and absolute slack of the inside test, far above the rounding of float mesh bounds.
+constexpr double kInsideMargin = 1e-4;
+
 /// Picks the LOD for a projected size: the largest k with size < thresholds[k-1].
 uint32_t lod_for_size(const MeshLods& m, double size) {
   uint32_t k = 0;
@@ -28,6 +31,17 @@ bool outside(const Vec4d* planes, int count, const Vec3d& c, double r) {
     if (len > 0.0 && (n.dot(c) + planes[k].w()) < -r * len) return true;
   }
   return false;
+}
+
+/// True when the view-space sphere lies inside every plane with a margin, so none of its
+/// triangles can be rejected by or need clipping against a plane (the per-triangle tests can go).
+bool inside(const Vec4d* planes, int count, const Vec3d& c, double r) {
+  const double margin = r * (1.0 + kInsideMargin) + kInsideMargin;
+  for (int k = 0; k < count; ++k) {
+    const Vec3d n = planes[k].head<3>();
+    if (!(n.dot(c) + planes[k].w() > margin * n.norm())) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -55,7 +69,7 @@ void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
 }
 
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, std::vector<uint32_t>& lod_out) {
+                      bool lod, InstanceSelection& out) {
   for (size_t i = 0; i < scene.instances.size(); ++i)
     if (scene.instances[i].mesh >= scene.meshes.size())
       throw InputError("render scene: instance " + std::to_string(i) + " names mesh " +
@@ -63,7 +77,9 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
                        std::to_string(scene.meshes.size()) + " meshes");
   Vec4d planes[6];
   const int count = view.frustum_planes(planes);
-  lod_out.resize(scene.instances.size());
+  out.lod.resize(scene.instances.size());
+  out.inside.resize(scene.instances.size());
+  out.nearness.resize(scene.instances.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, scene.instances.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) {
       const Instance& inst = scene.instances[i];
@@ -74,10 +90,14 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
       const double r_world = s.radius * scale;
       const Vec3d c = view.world_to_view.topLeftCorner<3, 3>() * world_center + view.world_to_view.block<3, 1>(0, 3);
       if (s.radius < 0.0 || !c.allFinite() || outside(planes, count, c, r_world)) {
-        lod_out[i] = kCulled;
+        out.lod[i] = kCulled;
+        out.inside[i] = 0;
+        out.nearness[i] = 0.0;
         continue;
       }
-      lod_out[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, c.norm())) : 0u;
+      out.inside[i] = inside(planes, count, c, r_world) ? 1 : 0;
+      out.nearness[i] = (view.perspective ? c.norm() : c.z()) - r_world;
+      out.lod[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, c.norm())) : 0u;
     }
   });
 }

@@ -21,9 +21,17 @@ struct BoundingSphere {
 /// those bounds are empty). Throws InputError for a mesh without LODs or with a null LOD.
 void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out);
 
-/// Per instance: the LOD to draw (0 when `lod` is false), or kCulled when its bounding sphere
-/// lies outside the view. Throws InputError for an instance naming a missing mesh.
+/// What culling decided for every scene instance in one view (indexed by instance).
+struct InstanceSelection {
+  std::vector<uint32_t> lod;     ///< LOD to draw (0 when LOD is off), or kCulled when outside the view.
+  std::vector<uint8_t> inside;   ///< 1 when the sphere lies well inside every frustum plane (its
+                                 ///< triangles skip the per-triangle frustum and clip tests), else 0.
+  std::vector<double> nearness;  ///< Depth of the sphere's nearest point along the view (draw order key).
+};
+
+/// Culls and picks LODs of every instance by its bounding sphere. Throws InputError for an
+/// instance naming a missing mesh.
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, std::vector<uint32_t>& lod_out);
+                      bool lod, InstanceSelection& out);
 
 }  // namespace silva::render

@@ -23,7 +23,7 @@
 ///     A sub-triangle whose snapped area has the wrong sign or is zero is a sliver and is dropped.
 ///
 /// Fixed point and fill rule
-///   - Vertices are snapped to 1/256 pixel (kSubpixelBits = 8): X = llround(u * 256).
+///   - Vertices are snapped to 1/256 pixel (kSubpixelBits = 8): X = round_half_away(u * 256) (llround).
 ///   - Edge a->b of an A > 0 triangle: E(p) = (bx-ax)(py-ay) - (by-ay)(px-ax); inside is E >= 0.
 ///     Edge values are exact integers (|E| < 2^50) held in doubles, so SIMD lanes of doubles
 ///     evaluate them exactly on every Highway target.

@@ -29,7 +29,7 @@ void check_pass(const ViewProjection& view, const RenderOptions& options) {
 /// The per-view results of a pass kind (camera or shadow).
 struct PassState {
   VisibilityBuffer vis;            ///< Winners per pixel.
-  std::vector<uint32_t> instance_lod;  ///< LOD per instance, kCulled when not drawn.
+  InstanceSelection instances;     ///< LOD per instance (kCulled when not drawn), draw order.
 };
 
 }  // namespace
@@ -48,8 +48,8 @@ struct Renderer::Impl {
                 PassState& state, RenderStats* stats) {
     check_pass(view, options);
     mesh_spheres(scene, spheres);
-    select_instances(scene, view, spheres, options.lod, state.instance_lod);
-    const uint64_t submitted = build_draw_items(scene, state.instance_lod, items);
+    select_instances(scene, view, spheres, options.lod, state.instances);
+    const uint64_t submitted = build_draw_items(scene, state.instances, items);
     const TileGrid grid = TileGrid::make(view.width, view.height, options.tile_size);
     const SetupView setup(view);
     run_geometry_pass(scene, setup, items, cull_back, grid, stores);
@@ -60,7 +60,7 @@ struct Renderer::Impl {
     if (!stats) return;
     *stats = RenderStats{};
     stats->instances_submitted = scene.instances.size();
-    for (uint32_t l : state.instance_lod) stats->instances_culled += l == kCulled ? 1 : 0;
+    for (uint32_t l : state.instances.lod) stats->instances_culled += l == kCulled ? 1 : 0;
     stats->triangles_submitted = submitted;
     for (const GeometryStore* s : store_list) {
       stats->triangles_after_cull += s->counters.after_cull;
@@ -87,10 +87,10 @@ const VisibilityBuffer& Renderer::render_visibility(const Scene& scene, const Ca
 void Renderer::render_gbuffer(const Scene& scene, const Camera& camera, const RenderOptions& options, GBuffer& out,
                               RenderStats* stats) {
   const VisibilityBuffer& vis = render_visibility(scene, camera, options, stats);
-  resolve_gbuffer(scene, camera, vis, impl_->camera.instance_lod, out);
+  resolve_gbuffer(scene, camera, vis, impl_->camera.instances.lod, out);
 }
 
-std::span<const uint32_t> Renderer::instance_lods() const { return impl_->camera.instance_lod; }
+std::span<const uint32_t> Renderer::instance_lods() const { return impl_->camera.instances.lod; }
 
 void Renderer::render_shadow_map(const Scene& scene, const Vec3d& direction_to_sun, const AABB& region, int resolution,
                                  const RenderOptions& options, ShadowMap& out, RenderStats* stats) {

@@ -9,6 +9,7 @@
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "render/tile_raster.cpp"
+#include "hwy/cache_control.h"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 #include "hwy/highway.h"
 
@@ -16,6 +17,9 @@ HWY_BEFORE_NAMESPACE();
 namespace silva::render::HWY_NAMESPACE {
 
 namespace hn = hwy::HWY_NAMESPACE;
+
+/// Triangles of a tile fetched ahead of the one being rasterised.
+constexpr size_t kPrefetchDistance = 8;
 
 /// Lanes of doubles, at most one 8-pixel block row.
 using DTag = hn::CappedTag<double, kDepthBlockSize>;
@@ -154,6 +158,12 @@ void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t sou
   for (size_t k = 0; k < source_count; ++k) {
     const TileSource& src = sources[k];
     for (size_t i = 0; i < src.count; ++i) {
+      // A tile's triangles lie scattered over the worker's store: fetch ahead of use.
+      if (i + kPrefetchDistance < src.count) {
+        const char* ahead = reinterpret_cast<const char*>(&src.tris[src.indices[i + kPrefetchDistance]]);
+        for (size_t b = 0; b < sizeof(RasterTri); b += 64) hwy::Prefetch(ahead + b);
+        hwy::Prefetch(ahead + sizeof(RasterTri) - 1);
+      }
       const RasterTri& t = src.tris[src.indices[i]];
       raster_triangle(t, t.alpha == kNoAlpha ? nullptr : &src.alphas[t.alpha], job, s, counters);
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/det_math.hpp"
 #include "render/clip.hpp"
 #include "render/raster_conventions.hpp"
 
@@ -11,10 +12,11 @@ namespace silva::render {
 
 namespace {
 
-/// A vertex snapped to the sub-pixel grid.
+/// A vertex snapped to the sub-pixel grid (no member initialisers: the setup's arrays of them
+/// are filled before use, and zeroing them showed in profiles).
 struct Snapped {
-  int64_t x = 0;  ///< u * 256, rounded.
-  int64_t y = 0;  ///< v * 256, rounded.
+  int64_t x;  ///< u * 256, rounded.
+  int64_t y;  ///< v * 256, rounded.
 };
 
 /// Offset of a pixel centre inside its pixel, in sub-pixel units.
@@ -65,7 +67,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
   const Vec3d& p1 = in.p[1];
   const Vec3d& p2 = in.p[2];
   if (!(p0.allFinite() && p1.allFinite() && p2.allFinite())) return 0;
-  for (int k = 0; k < sv.frustum_count; ++k) {
+  for (int k = in.inside_view ? sv.frustum_count : 0; k < sv.frustum_count; ++k) {
     const Vec4d& pl = sv.frustum[k];
     if (plane_value(pl, p0) < 0.0 && plane_value(pl, p1) < 0.0 && plane_value(pl, p2) < 0.0) return 0;
   }
@@ -79,7 +81,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
   Vec3d poly[kMaxClippedVertices] = {p0, p1, p2};
   int count = 3;
   bool needs_clip = false;
-  for (int k = 0; k < sv.clip_count && !needs_clip; ++k)
+  for (int k = in.inside_view ? sv.clip_count : 0; k < sv.clip_count && !needs_clip; ++k)
     for (int i = 0; i < 3; ++i) needs_clip = needs_clip || plane_value(sv.clip[k], poly[i]) < 0.0;
   if (needs_clip) {
     ++counters.clipped;
@@ -91,7 +93,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
   double vertex_depth_max = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < count; ++i) {
     const Vec2d uv = view.project(poly[i]);
-    s[i] = Snapped{std::llround(uv.x() * double(kSubpixelScale)), std::llround(uv.y() * double(kSubpixelScale))};
+    s[i] = Snapped{round_half_away(uv.x() * double(kSubpixelScale)), round_half_away(uv.y() * double(kSubpixelScale))};
     vertex_depth_max = std::max(vertex_depth_max, view.depth_value(poly[i]));
   }
 

@@ -14,6 +14,7 @@ struct TriangleInput {
   const Vec2f* uv[3] = {};          ///< Vertex uvs (only read when mask is set).
   const AlphaMask* mask = nullptr;  ///< Alpha mask of the part, or null.
   bool cull_back = true;            ///< Drop the triangle when it faces away.
+  bool inside_view = false;         ///< Known inside every frustum plane: skip the frustum and clip tests.
   uint64_t key = 0;                 ///< instance << 32 | triangle index.
 };
 

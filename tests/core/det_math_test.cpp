@@ -7,6 +7,14 @@
 namespace silva {
 namespace {
 
+TEST(DetMath, RoundHalfAwayEqualsLlround) {
+  for (double x : {0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994, 4503599627370495.5,
+                   -4503599627370495.5, 0.0, -0.0, 1e-300, 123456.5, -7.4999999})
+    EXPECT_EQ(round_half_away(x), std::llround(x)) << x;
+  for (double x = -3000.0; x <= 3000.0; x += 0.0625) EXPECT_EQ(round_half_away(x), std::llround(x)) << x;
+  for (double x = -1e9; x <= 1e9; x += 1234.56789) EXPECT_EQ(round_half_away(x), std::llround(x)) << x;
+}
+
 TEST(DetMath, ExpMatchesLibmClosely) {
   for (double x = -60.0; x <= 60.0; x += 0.37) EXPECT_NEAR(det_exp(x) / std::exp(x), 1.0, 4e-15) << x;
   EXPECT_EQ(det_exp(0.0), 1.0);
