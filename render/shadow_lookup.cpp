@@ -32,16 +32,24 @@ float shadow_visibility(const ShadowMap& map, const Vec3f& position, const Vec3f
   const float ax = float(sx - fx0), ay = float(sy - fy0);
   const float wx[4] = {1.0f - ax, 1.0f, 1.0f, ax}, wy[4] = {1.0f - ay, 1.0f, 1.0f, ay};
   const int tx = int(fx0) - 1, ty = int(fy0) - 1;
+  // Per column and row: texel index and receiver-depth offset (gx * ox, gy * oy), so each tap is
+  // (base + column offset) + row offset, the same sum as evaluating the plane per tap.
+  size_t column[4];
+  double column_offset[4];
+  for (int i = 0; i < 4; ++i) {
+    const int x = std::clamp(tx + i, 0, map.width - 1);
+    column[i] = size_t(x);
+    column_offset[i] = base + gx * ((double(x) + 0.5 - fx) * texel);
+  }
   float lit = 0.0f, dark = 0.0f;
   for (int j = 0; j < 4; ++j) {
     const int y = std::clamp(ty + j, 0, map.height - 1);
-    const double oy = (double(y) + 0.5 - fy) * texel;
+    const double row_offset = gy * ((double(y) + 0.5 - fy) * texel);
+    const float* row = map.depth.data() + size_t(y) * size_t(map.width);
     float row_lit = 0.0f, row_dark = 0.0f;
     for (int i = 0; i < 4; ++i) {
-      const int x = std::clamp(tx + i, 0, map.width - 1);
-      const double ox = (double(x) + 0.5 - fx) * texel;
-      const double receiver = base + gx * ox + gy * oy;
-      (float(receiver) <= map.depth[size_t(y) * size_t(map.width) + size_t(x)] ? row_lit : row_dark) += wx[i];
+      const double receiver = column_offset[i] + row_offset;
+      (float(receiver) <= row[column[i]] ? row_lit : row_dark) += wx[i];
     }
     lit += row_lit * wy[j];
     dark += row_dark * wy[j];

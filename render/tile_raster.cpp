@@ -4,6 +4,7 @@
 #include "render/tile_raster.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "render/raster_conventions.hpp"
 
@@ -24,14 +25,15 @@ constexpr size_t kPrefetchDistance = 8;
 /// Lanes of doubles, at most one 8-pixel block row.
 using DTag = hn::CappedTag<double, kDepthBlockSize>;
 
-/// Minimum of the stored depths of one block (clipped to the tile extent).
+/// Minimum of the stored depths of one whole 8x8 block. Pixels of the scratch outside the tile
+/// extent keep the clear depth, which only makes the minimum more conservative.
 double block_minimum(const TileScratch& s, const TileJob& job, int bx, int by) {
-  double m = s.depth[size_t(by * kDepthBlockSize) * size_t(job.stride) + size_t(bx * kDepthBlockSize)];
-  const int y_end = std::min(job.h, (by + 1) * kDepthBlockSize);
-  const int x_end = std::min(job.w, (bx + 1) * kDepthBlockSize);
-  for (int y = by * kDepthBlockSize; y < y_end; ++y)
-    for (int x = bx * kDepthBlockSize; x < x_end; ++x) m = std::min(m, s.depth[size_t(y) * size_t(job.stride) + size_t(x)]);
-  return m;
+  const DTag d;
+  const double* row = s.depth.data() + size_t(by * kDepthBlockSize) * size_t(job.stride) + size_t(bx * kDepthBlockSize);
+  auto m = hn::Set(d, std::numeric_limits<double>::infinity());
+  for (int y = 0; y < kDepthBlockSize; ++y, row += job.stride)
+    for (size_t x = 0; x < size_t(kDepthBlockSize); x += hn::Lanes(d)) m = hn::Min(m, hn::LoadU(d, row + x));
+  return hn::GetLane(hn::MinOfLanes(d, m));
 }
 
 /// Resolves lanes with a depth tie one by one (lower key wins); returns the writes made.
@@ -49,9 +51,20 @@ uint64_t write_lanes_scalar(const RasterTri& t, const double* dv, const uint8_t*
   return writes;
 }
 
+/// Texel index per lane of coordinates t wrapped into [0, 1) over n texels: AlphaMask::opaque's
+/// scalar operations (truncate, step down when above t, scale, truncate, clamp) on float lanes.
+template <class DF, class VF>
+auto texel_lanes(DF df, VF t, int n) {
+  const hn::RebindToSigned<DF> di;
+  VF f = hn::ConvertTo(df, hn::ConvertTo(di, t));
+  f = hn::IfThenElse(hn::Gt(f, t), hn::Sub(f, hn::Set(df, 1.0f)), f);
+  const auto i = hn::ConvertTo(di, hn::Mul(hn::Sub(t, f), hn::Set(df, float(n))));
+  return hn::Min(i, hn::Set(di, n - 1));
+}
+
 /// Lanes of `live` whose pixel centre (x = vx, y = py) is opaque in the triangle's alpha mask:
-/// barycentrics and uvs on SIMD lanes in AlphaAttrib's documented operation order,
-/// the texel lookup per live lane.
+/// barycentrics and uvs on double lanes in AlphaAttrib's documented operation order, texel
+/// indices on float lanes (the same operations as AlphaMask::opaque), the alpha byte per live lane.
 template <class D, class V, class M>
 M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
   const auto plane = [&](const PixelPlane& p) { return hn::Add(hn::Set(d, p.c + p.b * py), hn::Mul(hn::Set(d, p.a), vx)); };
@@ -61,13 +74,19 @@ M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
     return hn::Add(hn::Add(hn::Set(d, double(c0)), hn::Mul(b1, hn::Set(d, double(c1 - c0)))),
                    hn::Mul(b2, hn::Set(d, double(c2 - c0))));
   };
-  alignas(64) double u[kDepthBlockSize], v[kDepthBlockSize];
-  hn::Store(coord(a.uv0.x(), a.uv1.x(), a.uv2.x()), d, u);
-  hn::Store(coord(a.uv0.y(), a.uv1.y(), a.uv2.y()), d, v);
+  const hn::Rebind<float, D> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const AlphaMask& mask = *a.mask;
+  const auto u = hn::DemoteTo(df, coord(a.uv0.x(), a.uv1.x(), a.uv2.x()));
+  const auto v = hn::DemoteTo(df, coord(a.uv0.y(), a.uv1.y(), a.uv2.y()));
+  const auto index = hn::Add(hn::Mul(texel_lanes(df, v, mask.height), hn::Set(di, mask.width)), texel_lanes(df, u, mask.width));
+  alignas(64) int32_t idx[kDepthBlockSize];
+  hn::Store(index, di, idx);
   uint8_t live_bits[8] = {}, opaque_bits[8] = {};
   hn::StoreMaskBits(d, live, live_bits);
+  const float threshold = mask.cutoff * 255.0f;
   for (size_t k = 0; k < hn::Lanes(d); ++k)
-    if (((live_bits[k / 8] >> (k % 8)) & 1) && a.mask->opaque(float(u[k]), float(v[k])))
+    if (((live_bits[k / 8] >> (k % 8)) & 1) && float(mask.alpha[size_t(idx[k])]) >= threshold)
       opaque_bits[k / 8] = uint8_t(opaque_bits[k / 8] | (1u << (k % 8)));
   return hn::LoadMaskBits(d, opaque_bits);
 }
