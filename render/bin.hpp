@@ -29,6 +29,7 @@ struct GeometryStore {
   std::vector<std::vector<uint32_t>> bins;  ///< Per tile: indices into tris.
   SetupCounters counters;                   ///< Front-end counters.
   uint64_t bin_entries = 0;                 ///< (triangle, tile) pairs added.
+  VertexCache vertices;                     ///< Transformed vertices of the item being set up.
   /// Empties the store for a new pass over `tile_count` tiles (keeps capacity).
   void reset(int tile_count);
   /// Adds tris[first..end) to the bins of every tile whose samples they may cover.

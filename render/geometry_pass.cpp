@@ -44,6 +44,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   const size_t vertex_count = mesh.positions.size();
   TriangleInput in;
   in.inside_view = item.inside_view;
+  store.vertices.begin_item(vertex_count);
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
@@ -55,7 +56,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
         if (v >= vertex_count)
           throw InputError("render scene: mesh " + std::to_string(inst.mesh) + " has index " + std::to_string(v) +
                            " but only " + std::to_string(vertex_count) + " vertices");
-        in.p[k] = m.leftCols<3>() * mesh.positions[v].cast<double>() + m.col(3);
+        in.v[k] = &store.vertices.get(v, [&] { return Vec3d(m.leftCols<3>() * mesh.positions[v].cast<double>() + m.col(3)); });
         if (in.mask) in.uv[k] = &mesh.uvs[v];
       }
       in.key = (uint64_t(item.instance) << 32) | t;

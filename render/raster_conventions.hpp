@@ -41,7 +41,8 @@
 ///     lower. That is a total order, so the result does not depend on submission order,
 ///     binning order or thread count. Perspective views start at d = 1/far: z <= far is a hit.
 ///   - Early rejection: each 8x8 block keeps the minimum stored d; a triangle whose conservative
-///     maximum d is below it is skipped for that block (never changes the result).
+///     maximum d is below it is skipped for that block (never changes the result). Instances
+///     are drawn nearest first (by their bounding spheres) so more blocks are full early.
 ///   - The G-buffer's metric depth is not read back from d: the resolve re-intersects the pixel's
 ///     centre ray with the stored triangle in double.
 #include <cstdint>

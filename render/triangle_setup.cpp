@@ -25,6 +25,12 @@ constexpr int64_t kHalf = kSubpixelScale / 2;
 /// Floor of a / b for b > 0.
 int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
+/// Screen position of a view-space point (inside the near plane) snapped to the sub-pixel grid.
+Snapped snap(const ViewProjection& view, const Vec3d& p) {
+  const Vec2d uv = view.project(p);
+  return Snapped{round_half_away(uv.x() * double(kSubpixelScale)), round_half_away(uv.y() * double(kSubpixelScale))};
+}
+
 /// Value of a plane at a point.
 double plane_value(const Vec4d& plane, const Vec3d& p) {
   return plane.x() * p.x() + plane.y() * p.y() + plane.z() * p.z() + plane.w();
@@ -63,9 +69,9 @@ SetupView::SetupView(const ViewProjection& v) : view(v) {
 int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
                    std::vector<AlphaAttrib>& alphas, SetupCounters& counters) {
   const ViewProjection& view = sv.view;
-  const Vec3d& p0 = in.p[0];
-  const Vec3d& p1 = in.p[1];
-  const Vec3d& p2 = in.p[2];
+  const Vec3d& p0 = in.v[0]->p;
+  const Vec3d& p1 = in.v[1]->p;
+  const Vec3d& p2 = in.v[2]->p;
   if (!(p0.allFinite() && p1.allFinite() && p2.allFinite())) return 0;
   for (int k = in.inside_view ? sv.frustum_count : 0; k < sv.frustum_count; ++k) {
     const Vec4d& pl = sv.frustum[k];
@@ -78,23 +84,35 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
   if (!front && in.cull_back) return 0;
   ++counters.after_cull;
 
-  Vec3d poly[kMaxClippedVertices] = {p0, p1, p2};
-  int count = 3;
   bool needs_clip = false;
   for (int k = in.inside_view ? sv.clip_count : 0; k < sv.clip_count && !needs_clip; ++k)
-    for (int i = 0; i < 3; ++i) needs_clip = needs_clip || plane_value(sv.clip[k], poly[i]) < 0.0;
-  if (needs_clip) {
-    ++counters.clipped;
-    count = clip_polygon(sv.clip, sv.clip_count, poly, count);
-    if (count == 0) return 0;
-  }
-
+    needs_clip = plane_value(sv.clip[k], p0) < 0.0 || plane_value(sv.clip[k], p1) < 0.0 ||
+                 plane_value(sv.clip[k], p2) < 0.0;
   Snapped s[kMaxClippedVertices];
   double vertex_depth_max = -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < count; ++i) {
-    const Vec2d uv = view.project(poly[i]);
-    s[i] = Snapped{round_half_away(uv.x() * double(kSubpixelScale)), round_half_away(uv.y() * double(kSubpixelScale))};
-    vertex_depth_max = std::max(vertex_depth_max, view.depth_value(poly[i]));
+  int count = 3;
+  if (needs_clip) {
+    ++counters.clipped;
+    Vec3d poly[kMaxClippedVertices] = {p0, p1, p2};
+    count = clip_polygon(sv.clip, sv.clip_count, poly, count);
+    if (count == 0) return 0;
+    for (int i = 0; i < count; ++i) {
+      s[i] = snap(view, poly[i]);
+      vertex_depth_max = std::max(vertex_depth_max, view.depth_value(poly[i]));
+    }
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      SetupVertex& v = *in.v[i];
+      if (!v.projected) {
+        const Snapped sn = snap(view, v.p);
+        v.x = sn.x;
+        v.y = sn.y;
+        v.depth = view.depth_value(v.p);
+        v.projected = true;
+      }
+      s[i] = Snapped{v.x, v.y};
+      vertex_depth_max = std::max(vertex_depth_max, v.depth);
+    }
   }
 
   SharedPlanes shared;

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Front end for one triangle: cull, clip, snap, split into screen triangles, reject small ones.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -8,9 +9,48 @@
 
 namespace silva::render {
 
+/// A view-space vertex and, once a triangle that needs no clipping has used it, its snapped
+/// screen position: computed once per vertex and geometry item instead of once per triangle.
+struct SetupVertex {
+  Vec3d p;                 ///< View-space position.
+  bool projected = false;  ///< x, y and depth are set.
+  int64_t x = 0, y = 0;    ///< Screen position in 1/256 pixel, rounded (raster_conventions.hpp).
+  double depth = 0;        ///< Reverse depth value of p.
+};
+
+/// Per-worker SetupVertex slots indexed by mesh vertex, valid for the current geometry item only.
+struct VertexCache {
+  std::vector<SetupVertex> slots;  ///< One per mesh vertex.
+  std::vector<uint32_t> stamp;     ///< Item number that last filled each slot.
+  uint32_t item = 0;               ///< Current item number.
+  /// Starts a new item over a mesh of `vertex_count` vertices (every slot becomes stale).
+  void begin_item(size_t vertex_count) {
+    if (slots.size() < vertex_count) {
+      slots.resize(vertex_count);
+      stamp.resize(vertex_count, 0);
+    }
+    if (++item == 0) {  // wrapped: forget every stamp
+      std::fill(stamp.begin(), stamp.end(), 0u);
+      item = 1;
+    }
+  }
+  /// Slot of vertex `index` (< the item's vertex count); `position()` gives its view-space
+  /// position on first use in this item.
+  template <class Position>
+  SetupVertex& get(uint32_t index, Position&& position) {
+    SetupVertex& v = slots[index];
+    if (stamp[index] != item) {
+      stamp[index] = item;
+      v.p = position();
+      v.projected = false;
+    }
+    return v;
+  }
+};
+
 /// One mesh triangle in view space with what the rasteriser needs to know about its part.
 struct TriangleInput {
-  Vec3d p[3];                       ///< View-space vertices in mesh order.
+  SetupVertex* v[3] = {};           ///< View-space vertices in mesh order (shared between triangles).
   const Vec2f* uv[3] = {};          ///< Vertex uvs (only read when mask is set).
   const AlphaMask* mask = nullptr;  ///< Alpha mask of the part, or null.
   bool cull_back = true;            ///< Drop the triangle when it faces away.
