@@ -60,8 +60,8 @@ struct HalfResAo {
 };
 
 /// Linear radiance arriving at a visible surface pixel, fog included.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int u,
-                       int v, const Vec3f& view_dir) {
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, float fog_amount,
+                       const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
@@ -76,7 +76,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   }
   const float ao = half_ao.at(g, in.camera, u, v);
   light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
-  return fog.apply(albedo.cwiseProduct(light), s.position, view_dir);
+  return fog.apply(albedo.cwiseProduct(light), fog_amount, view_dir);
 }
 
 /// Exposed, tone-mapped, grained, sRGB-encoded bytes of one pixel's radiance.
@@ -101,11 +101,15 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const uint64_t key = grain_key(in.sequence, in.frame);
   const HalfResAo half_ao(g, in.camera);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<float> fog_amount(size_t(g.width));
     for (int v = rows.begin(); v < rows.end(); ++v) {
+      fog.amounts(&g.position[size_t(v) * size_t(g.width)], size_t(g.width), fog_amount.data());
       for (int u = 0; u < g.width; ++u) {
         const size_t i = size_t(v) * size_t(g.width) + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        const Vec3f radiance = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, half_ao, u, v, dir);
+        const Vec3f radiance = g.depth[i] == 0.0f
+                                   ? sky.radiance(dir)
+                                   : surface_radiance(in, sky, fog, fog_amount[size_t(u)], half_ao, u, v, dir);
         encode_pixel(in, exposure, key, i, radiance, &rgb_out[i * 3]);
       }
     }

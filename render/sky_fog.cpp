@@ -9,24 +9,16 @@ namespace silva::render {
 
 HeightFog::HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& camera_position)
     : sky_(sky),
-      camera_(camera_position),
+      params_{camera_position, std::max(preset.fog_height_falloff, 0.0f),
+              float(double(preset.fog_density) *
+                    det_exp(-double(preset.fog_height_falloff) * double(camera_position.z() - preset.fog_height)))},
       fog_color_(to_vec(preset.fog_color) * preset.sky_intensity),
-      falloff_(std::max(preset.fog_height_falloff, 0.0f)),
-      camera_density_(float(double(preset.fog_density) *
-                            det_exp(-double(preset.fog_height_falloff) *
-                                    double(camera_position.z() - preset.fog_height)))),
       sun_scatter_(preset.fog_sun_scatter) {}
 
 float HeightFog::amount(const Vec3f& point) const {
-  if (camera_density_ <= 0.0f) return 0.0f;
-  const Vec3f d = point - camera_;
-  const float length = d.norm();
-  const float k = falloff_ * d.z();
-  // Mean of exp(-falloff * dz * s) over s in [0, 1]: (1 - e^-k) / k, by its series near k = 0.
-  const float height_factor = std::abs(k) < 1e-2f ? 1.0f - k * (0.5f - k * (1.0f / 6.0f))
-                                                  : (1.0f - det_expf(-k)) / k;
-  const float optical_depth = camera_density_ * length * height_factor;
-  return 1.0f - det_expf(-optical_depth);
+  float a = 0.0f;
+  amounts(&point, 1, &a);
+  return a;
 }
 
 Vec3f HeightFog::color(const Vec3f& dir) const {
@@ -40,8 +32,7 @@ Vec3f HeightFog::color(const Vec3f& dir) const {
   return base + sky_.sun_radiance * (0.3f * sun_scatter_ * toward);
 }
 
-Vec3f HeightFog::apply(const Vec3f& surface, const Vec3f& point, const Vec3f& dir) const {
-  const float f = amount(point);
+Vec3f HeightFog::apply(const Vec3f& surface, float f, const Vec3f& dir) const {
   if (f <= 0.0f) return surface;
   return surface + (color(dir) - surface) * f;
 }

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Exponential height fog seen from one camera, coloured by the sky towards the sun/horizon.
 #include "core/types.hpp"
+#include "render/fog_amounts.hpp"
 #include "render/lighting.hpp"
 #include "render/sky.hpp"
 
@@ -11,19 +12,19 @@ struct HeightFog {
   /// Precomputes the camera-height factor of the fog integral.
   HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& camera_position);
   /// Fraction in [0, 1) of the view towards `point` replaced by fog (optical depth integrated
-  /// along the straight ray from the camera, in closed form).
+  /// along the straight ray from the camera, in closed form; see fog_amounts).
   float amount(const Vec3f& point) const;
+  /// amount() of `count` points at once into `out` (SIMD lanes; the same values).
+  void amounts(const Vec3f* points, size_t count, float* out) const { fog_amounts(params_, points, count, out); }
   /// Fog colour along unit view direction `dir`: horizon-matched, warmed towards the sun.
   Vec3f color(const Vec3f& dir) const;
-  /// `surface` seen through the fog towards `point` along unit direction `dir`.
-  Vec3f apply(const Vec3f& surface, const Vec3f& point, const Vec3f& dir) const;
+  /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
+  Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;
 
  private:
   const Sky& sky_;
-  Vec3f camera_;
+  FogAmountParams params_;  ///< Camera, falloff and density at the camera height.
   Vec3f fog_color_;
-  float falloff_;
-  float camera_density_;  ///< Fog density at the camera height.
   float sun_scatter_;
 };
 

@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
+#include "hwy/targets.h"
+
 #include "render/sky.hpp"
 #include "render/sky_fog.hpp"
 
@@ -56,6 +61,54 @@ TEST(ShadingSky, FogGrowsWithDistanceAndThinsWithHeight) {
   EXPECT_LT(fog.amount(Vec3f(100, 0, 60.0f)), fog.amount(Vec3f(100, 0, 1.5f)));
   EXPECT_LT(fog.amount(Vec3f(1e6f, 0, 1.5f)), 1.0f + 1e-6f);
   EXPECT_GT(fog.amount(Vec3f(1e5f, 0, 1.5f)), 0.99f);
+}
+
+TEST(ShadingSky, FogAmountMatchesTheClosedFormIntegral) {
+  LightingPreset day = preset_day();
+  day.fog_density = 0.02f;
+  day.fog_height_falloff = 0.05f;
+  day.fog_height = 0.0f;
+  const Sky sky(day);
+  const Vec3f cam(3, -2, 1.5f);
+  const HeightFog fog(day, sky, cam);
+  // density(z) = 0.02 exp(-0.05 z); optical depth = integral of density along the ray.
+  for (const Vec3f& p : {Vec3f(50, 10, 1.5f), Vec3f(-20, 80, 30.0f), Vec3f(3, -2, -40.0f), Vec3f(200, 0, 1.6f)}) {
+    const double len = (p - cam).cast<double>().norm(), dz = double(p.z() - cam.z());
+    const double k = 0.05 * dz;
+    const double mean = std::abs(k) < 1e-9 ? 1.0 : (1.0 - std::exp(-k)) / k;
+    const double expected = 1.0 - std::exp(-0.02 * std::exp(-0.05 * 1.5) * len * mean);
+    EXPECT_NEAR(fog.amount(p), expected, 2e-6) << p.transpose();
+  }
+}
+
+TEST(ShadingSky, FogAmountsAreIdenticalOnEveryHighwayTargetAndForAnyBatchLength) {
+  const LightingPreset day = preset_day();
+  const Sky sky(day);
+  const HeightFog fog(day, sky, Vec3f(1, 2, 1.5f));
+  std::vector<Vec3f> points;
+  for (int i = 0; i < 37; ++i)  // odd count: full vectors plus a tail on every target
+    points.emplace_back(float(i * 7 % 150) - 20.0f, float(i * 13 % 90), float(i % 9) * 4.0f - 6.0f + 1.5f);
+  points.emplace_back(1, 2, 1.5f);      // at the camera: 0
+  points.emplace_back(1, 2, 1.50001f);  // |k| below the series threshold
+  hwy::SetSupportedTargetsForTest(0);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  hwy::SetSupportedTargetsForTest(targets.back());
+  std::vector<float> reference(points.size());
+  fog.amounts(points.data(), points.size(), reference.data());
+  EXPECT_EQ(reference[37], 0.0f);
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    ASSERT_EQ(fog_simd_target(), target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<float> all(points.size());
+    fog.amounts(points.data(), points.size(), all.data());
+    for (size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(all[i], reference[i]) << i;
+      EXPECT_EQ(fog.amount(points[i]), reference[i]) << i;  // a batch of one
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets.size(), 2u);
 }
 
 TEST(ShadingSky, HemisphereLightIsSkyAboveGroundBelow) {
