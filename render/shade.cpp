@@ -61,7 +61,7 @@ struct HalfResAo {
 
 /// Linear radiance arriving at a visible surface pixel, fog included.
 Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, float fog_amount,
-                       const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
+                       float sun_visible, const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
@@ -71,8 +71,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   const float sun_facing = n_dot_l > 0.0f ? n_dot_l : -n_dot_l * translucency;
   Vec3f light = Vec3f::Zero();
   if (sun_facing > 0.0f && sky.sun_radiance.maxCoeff() > 0.0f) {
-    const float visible = in.shadow ? shadow_visibility(*in.shadow, s.position, s.normal, sky.to_sun) : 1.0f;
-    light = sky.sun_radiance * (sun_facing * visible);
+    light = sky.sun_radiance * (sun_facing * sun_visible);
   }
   const float ao = half_ao.at(g, in.camera, u, v);
   light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
@@ -101,15 +100,19 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const uint64_t key = grain_key(in.sequence, in.frame);
   const HalfResAo half_ao(g, in.camera);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-    std::vector<float> fog_amount(size_t(g.width));
+    std::vector<float> fog_amount(size_t(g.width)), sun_visible(size_t(g.width), 1.0f);
     for (int v = rows.begin(); v < rows.end(); ++v) {
-      fog.amounts(&g.position[size_t(v) * size_t(g.width)], size_t(g.width), fog_amount.data());
+      const size_t row = size_t(v) * size_t(g.width);
+      fog.amounts(&g.position[row], size_t(g.width), fog_amount.data());
+      if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
+        shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], size_t(g.width), sky.to_sun, sun_visible.data());
       for (int u = 0; u < g.width; ++u) {
         const size_t i = size_t(v) * size_t(g.width) + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
         const Vec3f radiance = g.depth[i] == 0.0f
                                    ? sky.radiance(dir)
-                                   : surface_radiance(in, sky, fog, fog_amount[size_t(u)], half_ao, u, v, dir);
+                                   : surface_radiance(in, sky, fog, fog_amount[size_t(u)], sun_visible[size_t(u)],
+                                                      half_ao, u, v, dir);
         encode_pixel(in, exposure, key, i, radiance, &rgb_out[i * 3]);
       }
     }

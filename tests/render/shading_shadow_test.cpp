@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
+#include "hwy/targets.h"
+
 #include "render/lighting.hpp"
 #include "render/shade.hpp"
 #include "render/shadow_lookup.hpp"
@@ -37,6 +41,40 @@ TEST(ShadingShadow, ShadowStaysAttachedToTheOccluderEdge) {
   EXPECT_EQ(shadow_visibility(map, Vec3f(0.5f, 0.5f, 0), kUp, kUp), 0.0f);
   EXPECT_LT(shadow_visibility(map, Vec3f(0.95f, 0, 0), kUp, kUp), 0.5f);
   EXPECT_EQ(shadow_visibility(map, Vec3f(1.25f, 0, 0), kUp, kUp), 1.0f);
+}
+
+TEST(ShadingShadow, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesSinglePoints) {
+  const ShadowMap map = test::plane_shadow_map(Vec3d(0.3, 0.2, 1).normalized(), 100, 0.1, 1.0, 2.0);
+  const Vec3f to_sun = Vec3d(0.3, 0.2, 1).normalized().cast<float>();
+  std::vector<Vec3f> positions, normals;
+  for (int i = 0; i < 41; ++i) {  // a line across the shadow edge, plus points outside the map
+    positions.emplace_back(float(i) * 0.07f - 1.4f, 0.013f * float(i), 0.0f);
+    normals.push_back(i % 3 == 0 ? Vec3f(0, 0, -1) : Vec3f(0.1f, 0, 1).normalized());
+  }
+  positions.emplace_back(40, 0, 0);
+  normals.push_back(kUp);
+  hwy::SetSupportedTargetsForTest(0);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  hwy::SetSupportedTargetsForTest(targets.back());
+  std::vector<float> reference(positions.size());
+  shadow_visibility_row(map, positions.data(), normals.data(), positions.size(), to_sun, reference.data());
+  EXPECT_EQ(reference.back(), 1.0f);  // outside the map
+  int penumbra = 0;
+  for (float r : reference) penumbra += r > 0.0f && r < 1.0f;
+  EXPECT_GT(penumbra, 0);
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    ASSERT_EQ(shadow_simd_target(), target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<float> row(positions.size());
+    shadow_visibility_row(map, positions.data(), normals.data(), positions.size(), to_sun, row.data());
+    for (size_t i = 0; i < positions.size(); ++i) {
+      EXPECT_EQ(row[i], reference[i]) << i;
+      EXPECT_EQ(shadow_visibility(map, positions[i], normals[i], to_sun), reference[i]) << i;
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets.size(), 2u);
 }
 
 TEST(ShadingShadow, ShadowedPixelIsDarkerThanTheSameMaterialLit) {
