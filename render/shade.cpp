@@ -33,11 +33,12 @@ struct HalfResAo {
   HalfResAo(const GBuffer& g, const Camera& camera) : width((g.width + 1) / 2), height((g.height + 1) / 2) {
     ao.resize(size_t(width) * size_t(height));
     tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < width; ++x) {
-          const size_t i = size_t(2 * y) * size_t(g.width) + size_t(2 * x);
-          ao[size_t(y) * size_t(width) + size_t(x)] = g.depth[i] == 0.0f ? -1.0f : screen_space_ao(g, camera, 2 * x, 2 * y);
-        }
+      for (int y = rows.begin(); y < rows.end(); ++y) {
+        float* row = &ao[size_t(y) * size_t(width)];
+        screen_space_ao_row(g, camera, 2 * y, 0, 2, width, row);
+        for (int x = 0; x < width; ++x)
+          if (g.depth[size_t(2 * y) * size_t(g.width) + size_t(2 * x)] == 0.0f) row[x] = -1.0f;
+      }
     });
   }
 

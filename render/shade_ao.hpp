@@ -13,4 +13,12 @@ inline constexpr float kAoRadius = 0.6f;
 /// closer than kAoRadius occludes in proportion to its elevation and closeness. Pure function.
 float screen_space_ao(const GBuffer& g, const Camera& camera, int u, int v);
 
+/// screen_space_ao of pixels (u0 + k step, v), k < count, into out[k], one pixel per SIMD lane;
+/// each lane runs the scalar operations in the same order, so every Highway target agrees.
+/// Pixels without a hit get a meaningless value (callers skip them).
+void screen_space_ao_row(const GBuffer& g, const Camera& camera, int v, int u0, int step, int count, float* out);
+
+/// The Highway target screen_space_ao_row dispatches to now.
+int64_t ao_simd_target();
+
 }  // namespace silva::render

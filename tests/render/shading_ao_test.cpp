@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
+#include "hwy/targets.h"
+
 #include "render/shade_ao.hpp"
 #include "shading_scene.hpp"
 
@@ -26,6 +30,42 @@ TEST(ShadingAo, OpenPlaneIsUnoccludedAndTheFootOfAWallIsOccluded) {
   }
   ASSERT_GT(feet, 0);
   EXPECT_GT(occluded_feet, feet / 2);
+}
+
+TEST(ShadingAo, RowsAreIdenticalOnEveryHighwayTargetAndMatchSinglePixels) {
+  const Camera cam = test::test_camera(77, 40, 20);  // odd width: full vectors plus tails
+  const GBuffer walled = test::plane_gbuffer(cam, Material::Ground, 6.0);
+  const int half = (cam.width + 1) / 2;
+  const size_t w = size_t(cam.width);
+  hwy::SetSupportedTargetsForTest(0);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  hwy::SetSupportedTargetsForTest(targets.back());
+  std::vector<float> reference(w * size_t(cam.height));
+  for (int v = 0; v < cam.height; ++v) screen_space_ao_row(walled, cam, v, 0, 1, cam.width, &reference[size_t(v) * w]);
+  int occluded = 0;
+  for (size_t i = 0; i < reference.size(); ++i) occluded += walled.depth[i] > 0 && reference[i] < 1.0f;
+  EXPECT_GT(occluded, 10);
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    ASSERT_EQ(ao_simd_target(), target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<float> row(w);
+    std::vector<float> even(static_cast<size_t>(half));
+    for (int v = 0; v < cam.height; ++v) {
+      screen_space_ao_row(walled, cam, v, 0, 1, cam.width, row.data());
+      screen_space_ao_row(walled, cam, v, 0, 2, half, even.data());
+      for (int u = 0; u < cam.width; ++u) {
+        const float expected = reference[size_t(v) * w + size_t(u)];
+        EXPECT_EQ(row[size_t(u)], expected) << u << "," << v;
+        EXPECT_EQ(screen_space_ao(walled, cam, u, v), expected) << u << "," << v;
+        if (u % 2 == 0) {
+          EXPECT_EQ(even[size_t(u / 2)], expected) << u << "," << v;
+        }
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace
