@@ -12,7 +12,6 @@
 namespace silva::render {
 
 namespace {
-constexpr int kSrgbTableSize = 16384;
 constexpr int kQuantiles = 65536;
 
 /// Inverse standard normal CDF by Acklam's rational approximation (relative error < 1.2e-9;
@@ -88,6 +87,8 @@ uint8_t linear_to_srgb8(float x) {
   // c >= 0, so adding 0.5 and truncating rounds half up; these exact bytes are part of the output.
   return srgb_table()[size_t(int(c * float(kSrgbTableSize - 1) + 0.5f))];  // NOLINT(bugprone-incorrect-roundings)
 }
+
+const uint8_t* srgb8_table() { return srgb_table().data(); }
 
 uint64_t grain_key(std::string_view sequence, uint64_t frame) {
   uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a over the name's bytes

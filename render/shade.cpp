@@ -79,13 +79,6 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   return fog.apply(albedo.cwiseProduct(light), fog_amount, view_dir);
 }
 
-/// Exposed, tone-mapped, grained, sRGB-encoded bytes of one pixel's radiance.
-void encode_pixel(const ShadeInputs& in, float exposure, uint64_t key, size_t pixel, const Vec3f& radiance,
-                  uint8_t* out) {
-  const Vec3f grain = in.film_grain > 0.0f ? film_grain(in.seed, key, pixel, in.film_grain) : Vec3f::Zero();
-  for (int c = 0; c < 3; ++c) out[c] = linear_to_srgb8(tonemap_aces(radiance[c] * exposure) + grain[c]);
-}
-
 }  // namespace
 
 void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
@@ -102,20 +95,22 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const HalfResAo half_ao(g, in.camera);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     std::vector<float> fog_amount(size_t(g.width)), sun_visible(size_t(g.width), 1.0f);
+    std::vector<Vec3f> radiance(size_t(g.width)), grain(in.film_grain > 0.0f ? size_t(g.width) : 0);
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
       fog.amounts(&g.position[row], size_t(g.width), fog_amount.data());
       if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
         shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], size_t(g.width), sky.to_sun, sun_visible.data());
       for (int u = 0; u < g.width; ++u) {
-        const size_t i = size_t(v) * size_t(g.width) + size_t(u);
+        const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        const Vec3f radiance = g.depth[i] == 0.0f
-                                   ? sky.radiance(dir)
-                                   : surface_radiance(in, sky, fog, fog_amount[size_t(u)], sun_visible[size_t(u)],
-                                                      half_ao, u, v, dir);
-        encode_pixel(in, exposure, key, i, radiance, &rgb_out[i * 3]);
+        radiance[size_t(u)] = g.depth[i] == 0.0f ? sky.radiance(dir)
+                                                 : surface_radiance(in, sky, fog, fog_amount[size_t(u)],
+                                                                    sun_visible[size_t(u)], half_ao, u, v, dir);
+        if (!grain.empty()) grain[size_t(u)] = film_grain(in.seed, key, i, in.film_grain);
       }
+      encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,
+                       &rgb_out[row * 3]);
     }
   });
 }

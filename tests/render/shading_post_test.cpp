@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
+
+#include "hwy/targets.h"
 
 #include "render/post.hpp"
 
@@ -42,6 +45,40 @@ TEST(ShadingPost, ExposureIsPowerOfTwo) {
   EXPECT_EQ(exposure_scale(1.0f), 2.0f);
   EXPECT_EQ(exposure_scale(-2.0f), 0.25f);
   EXPECT_NEAR(exposure_scale(0.5f), std::sqrt(2.0f), 1e-6f);
+}
+
+}  // namespace
+}  // namespace silva::render
+
+namespace silva::render {
+namespace {
+
+TEST(ShadingPost, RowEncoderGivesTheScalarBytesOnEveryHighwayTarget) {
+  std::vector<float> radiance, grain;
+  for (int i = 0; i < 3 * 53; ++i) {  // 53 pixels: full vectors plus a tail on every target
+    radiance.push_back(i % 7 == 0 ? -0.5f : float(i * i % 997) * 0.004f);
+    grain.push_back(float(i % 11 - 5) * 0.01f);
+  }
+  const float exposure = 1.7f;
+  std::vector<uint8_t> plain, grained;
+  for (size_t k = 0; k < radiance.size(); ++k) {
+    plain.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure)));
+    grained.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure) + grain[k]));
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    ASSERT_EQ(encode_simd_target(), target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<uint8_t> out(radiance.size());
+    encode_srgb8_row(radiance.data(), nullptr, 53, exposure, out.data());
+    EXPECT_EQ(out, plain);
+    encode_srgb8_row(radiance.data(), grain.data(), 53, exposure, out.data());
+    EXPECT_EQ(out, grained);
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace
