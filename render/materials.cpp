@@ -10,9 +10,6 @@ namespace {
 
 /// Noise salts: one per independent pattern so patterns never repeat each other.
 enum Salt : uint32_t {
-  kGroundPatch = 0x100,
-  kGroundLitter = 0x200,
-  kGroundFine = 0x300,
   kTrailFine = 0x400,
   kTrailPebble = 0x500,
   kBarkStreak = 0x600,
@@ -37,17 +34,11 @@ Vec3f variation_tint(uint32_t variation) {
   return Vec3f(bright * (1.0f + yellow), bright * (1.0f + 0.4f * yellow), bright * (1.0f - 0.5f * yellow));
 }
 
-/// Forest floor: soil, leaf/needle litter and moss, blended by slope and noise.
+/// Forest floor (ground_albedo_row for one point).
 Vec3f ground(const SurfacePoint& s) {
-  const Vec3f& p = s.position;
-  const Vec3f soil(0.1f, 0.075f, 0.05f), litter(0.14f, 0.1f, 0.06f), moss(0.08f, 0.1f, 0.035f);
-  const float flat = smoothstep(0.75f, 0.95f, s.normal.z());
-  const float patch = fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundPatch);
-  const float litter_w = smoothstep(0.35f, 0.6f, fbm2(p.x() * 0.7f, p.y() * 0.7f, 2, kGroundLitter));
-  const float fine = fbm2(p.x() * 5.0f, p.y() * 5.0f, 2, kGroundFine);
-  Vec3f c = lerp(soil, litter, litter_w * flat);
-  c = lerp(c, moss, smoothstep(0.52f, 0.68f, patch) * flat);
-  return c * (0.7f + 0.6f * fine);
+  Vec3f c;
+  ground_albedo_row(&s.position, &s.normal, 1, &c);
+  return c;
 }
 
 /// Packed dirt of the trail, pebbly; its edges (uv.x near 0 or 1) fade into the ground.

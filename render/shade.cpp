@@ -61,22 +61,58 @@ struct HalfResAo {
 };
 
 /// Linear radiance arriving at a visible surface pixel, fog included.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, float fog_amount,
-                       float sun_visible, const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
+/// What shade_rgb evaluates for a whole row before the per-pixel loop (SIMD lanes).
+struct RowTerms {
+  std::vector<float> fog_amount;    ///< HeightFog amount per pixel.
+  std::vector<float> sun_visible;   ///< Shadow-map visibility per pixel (1 without shadows).
+  std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only Material::Ground pixels set).
+  std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
+  std::vector<Vec3f> gather_p, gather_n, gather_out;  ///< Compacted ground inputs and results.
+
+  /// Sized for rows of `width` pixels.
+  explicit RowTerms(int width)
+      : fog_amount(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)) {}
+
+  /// Evaluates the terms of row v.
+  void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, int v) {
+    const GBuffer& g = in.gbuffer;
+    const size_t row = size_t(v) * size_t(g.width), w = size_t(g.width);
+    fog.amounts(&g.position[row], w, fog_amount.data());
+    if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
+      shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], w, sky.to_sun, sun_visible.data());
+    ground_at.clear();
+    gather_p.clear();
+    gather_n.clear();
+    for (size_t u = 0; u < w; ++u)
+      if (g.depth[row + u] != 0.0f && g.material[row + u] == Material::Ground && g.base_color[row + u] == 0) {
+        ground_at.push_back(uint32_t(u));
+        gather_p.push_back(g.position[row + u]);
+        gather_n.push_back(g.normal[row + u]);
+      }
+    gather_out.resize(ground_at.size());
+    ground_albedo_row(gather_p.data(), gather_n.data(), ground_at.size(), gather_out.data());
+    for (size_t k = 0; k < ground_at.size(); ++k) ground[ground_at[k]] = gather_out[k];
+  }
+};
+
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const RowTerms& row,
+                       const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
-  const Vec3f albedo = g.base_color[i] != 0 ? unpack_srgb8(g.base_color[i]) : material_albedo(s);
+  const Vec3f albedo = g.base_color[i] != 0             ? unpack_srgb8(g.base_color[i])
+                       : s.material == Material::Ground ? row.ground[size_t(u)]
+                                                        : material_albedo(s);
   const float n_dot_l = s.normal.dot(sky.to_sun);
   const float translucency = material_translucency(s.material) * in.preset.foliage_translucency;
   const float sun_facing = n_dot_l > 0.0f ? n_dot_l : -n_dot_l * translucency;
   Vec3f light = Vec3f::Zero();
   if (sun_facing > 0.0f && sky.sun_radiance.maxCoeff() > 0.0f) {
-    light = sky.sun_radiance * (sun_facing * sun_visible);
+    light = sky.sun_radiance * (sun_facing * row.sun_visible[size_t(u)]);
   }
   const float ao = half_ao.at(g, in.camera, u, v);
   light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
-  return fog.apply(albedo.cwiseProduct(light), fog_amount, view_dir);
+  return fog.apply(albedo.cwiseProduct(light), row.fog_amount[size_t(u)], view_dir);
 }
 
 }  // namespace
@@ -94,19 +130,16 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const uint64_t key = grain_key(in.sequence, in.frame);
   const HalfResAo half_ao(g, in.camera);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-    std::vector<float> fog_amount(size_t(g.width)), sun_visible(size_t(g.width), 1.0f);
+    RowTerms terms(g.width);
     std::vector<Vec3f> radiance(size_t(g.width)), grain(in.film_grain > 0.0f ? size_t(g.width) : 0);
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
-      fog.amounts(&g.position[row], size_t(g.width), fog_amount.data());
-      if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
-        shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], size_t(g.width), sky.to_sun, sun_visible.data());
+      terms.evaluate(in, sky, fog, v);
       for (int u = 0; u < g.width; ++u) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
         radiance[size_t(u)] = g.depth[i] == 0.0f ? sky.radiance(dir)
-                                                 : surface_radiance(in, sky, fog, fog_amount[size_t(u)],
-                                                                    sun_visible[size_t(u)], half_ao, u, v, dir);
+                                                 : surface_radiance(in, sky, fog, terms, half_ao, u, v, dir);
         if (!grain.empty()) grain[size_t(u)] = film_grain(in.seed, key, i, in.film_grain);
       }
       encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,

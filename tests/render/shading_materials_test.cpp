@@ -1,6 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
+#include "hwy/targets.h"
 #include "render/materials.hpp"
+#include "render/shading_noise.hpp"
 
 namespace silva::render {
 namespace {
@@ -57,6 +62,54 @@ TEST(ShadingMaterials, TrailEdgesBlendIntoTheGround) {
   const float centre_gap = (material_albedo(centre) - ground).norm();
   EXPECT_GT(centre_gap, 1e-2f);
   EXPECT_LT(edge_gap, 0.5f * centre_gap);
+}
+
+}  // namespace
+}  // namespace silva::render
+
+namespace silva::render {
+namespace {
+
+/// The ground formula of materials.hpp from the scalar noise functions (test oracle).
+Vec3f ground_oracle(const Vec3f& p, const Vec3f& n) {
+  const auto smoothstep = [](float e0, float e1, float x) {
+    return smooth_weight(std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f));
+  };
+  const float flat = smoothstep(0.75f, 0.95f, n.z());
+  const float patch = fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundPatchSalt);
+  const float litter = smoothstep(0.35f, 0.6f, fbm2(p.x() * 0.7f, p.y() * 0.7f, 2, kGroundLitterSalt));
+  const float fine = fbm2(p.x() * 5.0f, p.y() * 5.0f, 2, kGroundFineSalt);
+  Vec3f c;
+  for (int k = 0; k < 3; ++k) {
+    float v = kGroundSoil[k] + (kGroundLitter[k] - kGroundSoil[k]) * (litter * flat);
+    v = v + (kGroundMoss[k] - v) * (smoothstep(0.52f, 0.68f, patch) * flat);
+    c[k] = v * (0.7f + 0.6f * fine);
+  }
+  return c;
+}
+
+TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
+  std::vector<Vec3f> p, n;
+  for (int i = 0; i < 45; ++i) {  // odd count: full vectors plus a tail
+    p.emplace_back(float(i) * 3.7f - 60.0f, float(i * i % 37) * 1.3f - 20.0f, float(i % 5));
+    n.push_back(Vec3f(0.05f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  for (int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    ASSERT_EQ(ground_simd_target(), target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<Vec3f> out(p.size());
+    ground_albedo_row(p.data(), n.data(), p.size(), out.data());
+    for (size_t i = 0; i < p.size(); ++i) {
+      EXPECT_EQ(out[i], ground_oracle(p[i], n[i])) << i;
+      SurfacePoint s{p[i], n[i], Vec2f::Zero(), Material::Ground, 0};
+      EXPECT_EQ(material_albedo(s), out[i]) << i;
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace

@@ -1,0 +1,141 @@
+// The per-target kernel of ground_albedo_row (render/materials.hpp), compiled once per Highway
+// target (foreach_target) and chosen at run time. Value noise, fBm and the forest-floor blend run
+// one point per float lane with the scalar functions' operations (shading_noise.hpp) in the same
+// order, no MulAdd, so every target gives the same bits.
+#include <algorithm>
+
+#include "render/materials.hpp"
+#include "render/shading_noise.hpp"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "render/ground_lanes.cpp"
+#include "hwy/foreach_target.h"  // IWYU pragma: keep
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace silva::render::HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;    ///< One point per lane.
+using DU = hn::RebindToUnsigned<DF>;  ///< Lattice hashes.
+using DI = hn::RebindToSigned<DF>;    ///< Lattice indices.
+using VF = hn::Vec<DF>;               ///< Float lanes.
+using VU = hn::Vec<DU>;               ///< Hash lanes.
+
+/// smooth_weight on lanes: t * t * (3 - 2 t).
+VF smooth_weight_lanes(VF t) {
+  const DF d;
+  return hn::Mul(hn::Mul(t, t), hn::Sub(hn::Set(d, 3.0f), hn::Mul(hn::Set(d, 2.0f), t)));
+}
+
+/// mix on lanes: a + (b - a) t.
+VF mix_lanes(VF a, VF b, VF t) { return hn::Add(a, hn::Mul(hn::Sub(b, a), t)); }
+
+/// lattice_value(lattice_hash(x, y, 0, salt)) on lanes (x, y are the lattice indices as u32).
+VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
+  const DU du;
+  const DF df;
+  VU h = hn::Xor(hn::Mul(x, hn::Set(du, 0x8da6b343u)), hn::Mul(y, hn::Set(du, 0xd8163841u)));  // z = 0
+  h = hn::Xor(h, hn::Set(du, salt * 0x9e3779b9u));
+  h = hn::Xor(h, hn::ShiftRight<16>(h));
+  h = hn::Mul(h, hn::Set(du, 0x85ebca6bu));
+  h = hn::Xor(h, hn::ShiftRight<13>(h));
+  h = hn::Mul(h, hn::Set(du, 0xc2b2ae35u));
+  h = hn::Xor(h, hn::ShiftRight<16>(h));
+  const auto top = hn::BitCast(DI(), hn::ShiftRight<8>(h));  // < 2^24: exact as float
+  return hn::Mul(hn::ConvertTo(df, top), hn::Set(df, 1.0f / 16777216.0f));
+}
+
+/// value_noise2 on lanes.
+VF value_noise2_lanes(VF x, VF y, uint32_t salt) {
+  const DF df;
+  const DU du;
+  const VF fx = hn::Floor(x), fy = hn::Floor(y);
+  const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), fx)), iy = hn::BitCast(du, hn::ConvertTo(DI(), fy));
+  const VF wx = smooth_weight_lanes(hn::Sub(x, fx)), wy = smooth_weight_lanes(hn::Sub(y, fy));
+  const VU one = hn::Set(du, 1u);
+  const VF v00 = lattice_value_lanes(ix, iy, salt), v10 = lattice_value_lanes(hn::Add(ix, one), iy, salt);
+  const VF v01 = lattice_value_lanes(ix, hn::Add(iy, one), salt);
+  const VF v11 = lattice_value_lanes(hn::Add(ix, one), hn::Add(iy, one), salt);
+  (void)df;
+  return mix_lanes(mix_lanes(v00, v10, wx), mix_lanes(v01, v11, wx), wy);
+}
+
+/// fbm2 on lanes.
+VF fbm2_lanes(VF x, VF y, int octaves, uint32_t salt) {
+  const DF d;
+  VF sum = hn::Zero(d);
+  float amp = 1.0f, norm = 0.0f;
+  for (int o = 0; o < octaves; ++o) {
+    sum = hn::Add(sum, hn::Mul(hn::Set(d, amp), value_noise2_lanes(x, y, salt + uint32_t(o))));
+    norm += amp;
+    amp *= 0.5f;
+    x = hn::Mul(x, hn::Set(d, 2.0f));
+    y = hn::Mul(y, hn::Set(d, 2.0f));
+  }
+  return hn::Div(sum, hn::Set(d, norm));
+}
+
+/// materials.cpp's smoothstep on lanes: smooth_weight(clamp((x - e0) / (e1 - e0), 0, 1)).
+VF smoothstep_lanes(float e0, float e1, VF x) {
+  const DF d;
+  const VF t = hn::Div(hn::Sub(x, hn::Set(d, e0)), hn::Set(d, e1 - e0));
+  return smooth_weight_lanes(hn::Min(hn::Max(t, hn::Zero(d)), hn::Set(d, 1.0f)));
+}
+
+/// ground_albedo_row for one target.
+void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, size_t count, Vec3f* out) {
+  const DF d;
+  const size_t N = hn::Lanes(d);
+  const float* p = positions->data();
+  const float* n = normals->data();
+  float* o = out->data();
+  const auto scaled = [&](VF v, float k) { return hn::Mul(v, hn::Set(d, k)); };
+  for (size_t first = 0; first < count; first += N) {
+    const size_t lanes = std::min(N, count - first);
+    HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, nin[3 * hn::MaxLanes(d)] = {}, res[3 * hn::MaxLanes(d)];
+    std::copy(p + 3 * first, p + 3 * (first + lanes), pin);
+    std::copy(n + 3 * first, n + 3 * (first + lanes), nin);
+    VF px, py, pz, nx, ny, nz;
+    hn::LoadInterleaved3(d, pin, px, py, pz);
+    hn::LoadInterleaved3(d, nin, nx, ny, nz);
+    const VF flat = smoothstep_lanes(0.75f, 0.95f, nz);
+    const VF patch = fbm2_lanes(scaled(px, 0.15f), scaled(py, 0.15f), 3, kGroundPatchSalt);
+    const VF litter_w = smoothstep_lanes(0.35f, 0.6f, fbm2_lanes(scaled(px, 0.7f), scaled(py, 0.7f), 2, kGroundLitterSalt));
+    const VF fine = fbm2_lanes(scaled(px, 5.0f), scaled(py, 5.0f), 2, kGroundFineSalt);
+    const VF to_litter = hn::Mul(litter_w, flat);
+    const VF to_moss = hn::Mul(smoothstep_lanes(0.52f, 0.68f, patch), flat);
+    const VF brightness = hn::Add(hn::Set(d, 0.7f), hn::Mul(hn::Set(d, 0.6f), fine));
+    VF c[3];
+    for (int k = 0; k < 3; ++k) {
+      const VF soil = hn::Set(d, kGroundSoil[k]);
+      VF v = hn::Add(soil, hn::Mul(hn::Set(d, kGroundLitter[k] - kGroundSoil[k]), to_litter));
+      v = hn::Add(v, hn::Mul(hn::Sub(hn::Set(d, kGroundMoss[k]), v), to_moss));
+      c[k] = hn::Mul(v, brightness);
+    }
+    hn::StoreInterleaved3(c[0], c[1], c[2], d, res);
+    std::copy(res, res + 3 * lanes, o + 3 * first);
+  }
+}
+
+/// The target this copy of the kernel was compiled for.
+int64_t GroundTargetImpl() { return HWY_TARGET; }
+
+}  // namespace silva::render::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace silva::render {
+
+HWY_EXPORT(GroundRowImpl);
+HWY_EXPORT(GroundTargetImpl);
+
+void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, size_t count, Vec3f* out) {
+  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, count, out);
+}
+
+int64_t ground_simd_target() { return HWY_DYNAMIC_DISPATCH(GroundTargetImpl)(); }
+
+}  // namespace silva::render
+#endif  // HWY_ONCE
