@@ -41,24 +41,35 @@ struct HitTriangle {
   const MeshPart* part = nullptr;                 ///< Its part (role, material).
   Vec3d p[3];                                     ///< World-space vertices.
   Vec3d e1, e2;                                   ///< Edges p1 - p0 and p2 - p0.
+  Vec3d s;                                        ///< Camera origin - p0 (Moller-Trumbore).
+  Vec3d qvec;                                     ///< s x e1: constant over the triangle's pixels.
+  double e2_dot_q = 0;                            ///< e2 . qvec (t = e2_dot_q / det).
   Mat3d cof;                                      ///< Normal transform (cofactor of the linear part).
+  Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
 
-  /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`.
-  void prepare(const Scene& scene, uint32_t instance_index, uint32_t lod, uint32_t triangle_index) {
+  /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`, seen from `origin` (the
+  /// instance's transforms are reused while consecutive pixels stay on one instance).
+  void prepare(const Scene& scene, uint32_t instance_index, uint32_t lod, uint32_t triangle_index,
+               const Vec3d& origin) {
+    if (instance_index != instance) {
+      inst = &scene.instances[instance_index];
+      m = inst->object_to_world.cast<double>();
+      const Mat3d lin = m.leftCols<3>();
+      cof.col(0) = lin.col(1).cross(lin.col(2));
+      cof.col(1) = lin.col(2).cross(lin.col(0));
+      cof.col(2) = lin.col(0).cross(lin.col(1));
+      if (lin.determinant() < 0.0) cof = -cof;
+    }
     instance = instance_index;
     triangle = triangle_index;
-    inst = &scene.instances[instance_index];
     mesh = scene.meshes[inst->mesh].lods[lod];
-    const Eigen::Matrix<double, 3, 4> m = inst->object_to_world.cast<double>();
     idx = &mesh->indices[size_t(triangle_index) * 3];
     for (int k = 0; k < 3; ++k) p[k] = m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3);
     e1 = p[1] - p[0];
     e2 = p[2] - p[0];
-    const Mat3d lin = m.leftCols<3>();
-    cof.col(0) = lin.col(1).cross(lin.col(2));
-    cof.col(1) = lin.col(2).cross(lin.col(0));
-    cof.col(2) = lin.col(0).cross(lin.col(1));
-    if (lin.determinant() < 0.0) cof = -cof;
+    s = origin - p[0];
+    qvec = s.cross(e1);
+    e2_dot_q = e2.dot(qvec);
     part = &part_of(*mesh, triangle_index);
   }
 };
@@ -76,11 +87,9 @@ void write_hit(const Camera& cam, const HitTriangle& h, int u, int v, GBuffer& g
   const double det = e1.dot(pvec);
   double b1 = 1.0 / 3.0, b2 = 1.0 / 3.0, t = 0.0;
   if (det != 0.0) {
-    const Vec3d s = origin - p[0];
-    const Vec3d qvec = s.cross(e1);
-    b1 = s.dot(pvec) / det;
-    b2 = dir.dot(qvec) / det;
-    t = e2.dot(qvec) / det;
+    b1 = h.s.dot(pvec) / det;
+    b2 = dir.dot(h.qvec) / det;
+    t = h.e2_dot_q / det;
   }
   if (!(t > 0.0)) {  // ray parallel to the triangle's plane: fall back to the centroid's depth
     const Vec3d centroid = (p[0] + p[1] + p[2]) / 3.0;
@@ -126,6 +135,7 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
     out.resize(vis.width, vis.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, vis.height, 8), [&](const tbb::blocked_range<int>& rows) {
     HitTriangle h;
+    const Vec3d origin = camera.position();
     for (int v = rows.begin(); v != rows.end(); ++v) {
       for (int u = 0; u < vis.width; ++u) {
         const size_t i = size_t(v) * size_t(vis.width) + size_t(u);
@@ -134,7 +144,7 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
           write_miss(out, i);
         } else {
           if (inst != h.instance || vis.triangle[i] != h.triangle)
-            h.prepare(scene, inst, instance_lod[inst], vis.triangle[i]);
+            h.prepare(scene, inst, instance_lod[inst], vis.triangle[i], origin);
           write_hit(camera, h, u, v, out, i);
         }
       }
