@@ -2,8 +2,7 @@
 
 #include <vector>
 
-#include "hwy/targets.h"
-
+#include "highway_targets.hpp"
 #include "render/shade_ao.hpp"
 #include "shading_scene.hpp"
 
@@ -37,16 +36,19 @@ TEST(ShadingAo, RowsAreIdenticalOnEveryHighwayTargetAndMatchSinglePixels) {
   const GBuffer walled = test::plane_gbuffer(cam, Material::Ground, 6.0);
   const int half = (cam.width + 1) / 2;
   const size_t w = size_t(cam.width);
-  hwy::SetSupportedTargetsForTest(0);
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  hwy::SetSupportedTargetsForTest(targets.back());
-  std::vector<float> reference(w * size_t(cam.height));
-  for (int v = 0; v < cam.height; ++v) screen_space_ao_row(walled, cam, v, 0, 1, cam.width, &reference[size_t(v) * w]);
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
+  const std::vector<float> reference = [&] {
+    const test::PinnedTarget portable(targets.back());
+    std::vector<float> r(w * size_t(cam.height));
+    for (int v = 0; v < cam.height; ++v) screen_space_ao_row(walled, cam, v, 0, 1, cam.width, &r[size_t(v) * w]);
+    return r;
+  }();
   int occluded = 0;
   for (size_t i = 0; i < reference.size(); ++i) occluded += walled.depth[i] > 0 && reference[i] < 1.0f;
   EXPECT_GT(occluded, 10);
   for (int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::PinnedTarget pinned(target);
     ASSERT_EQ(ao_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<float> row(w);
@@ -64,8 +66,6 @@ TEST(ShadingAo, RowsAreIdenticalOnEveryHighwayTargetAndMatchSinglePixels) {
       }
     }
   }
-  hwy::SetSupportedTargetsForTest(0);
-  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "hwy/targets.h"
+#include "highway_targets.hpp"
 #include "render/materials.hpp"
 #include "render/shading_noise.hpp"
 
@@ -94,10 +94,10 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     p.emplace_back(float(i) * 3.7f - 60.0f, float(i * i % 37) * 1.3f - 20.0f, float(i % 5));
     n.push_back(Vec3f(0.05f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
   }
-  hwy::SetSupportedTargetsForTest(0);
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::PinnedTarget pinned(target);
     ASSERT_EQ(ground_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<Vec3f> out(p.size());
@@ -108,8 +108,6 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
       EXPECT_EQ(material_albedo(s), out[i]) << i;
     }
   }
-  hwy::SetSupportedTargetsForTest(0);
-  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace

@@ -3,8 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "hwy/targets.h"
-
+#include "highway_targets.hpp"
 #include "render/post.hpp"
 
 namespace silva::render {
@@ -65,10 +64,10 @@ TEST(ShadingPost, RowEncoderGivesTheScalarBytesOnEveryHighwayTarget) {
     plain.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure)));
     grained.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure) + grain[k]));
   }
-  hwy::SetSupportedTargetsForTest(0);
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::PinnedTarget pinned(target);
     ASSERT_EQ(encode_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<uint8_t> out(radiance.size());
@@ -77,8 +76,6 @@ TEST(ShadingPost, RowEncoderGivesTheScalarBytesOnEveryHighwayTarget) {
     encode_srgb8_row(radiance.data(), grain.data(), 53, exposure, out.data());
     EXPECT_EQ(out, grained);
   }
-  hwy::SetSupportedTargetsForTest(0);
-  EXPECT_GE(targets.size(), 2u);
 }
 
 }  // namespace

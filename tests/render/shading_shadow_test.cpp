@@ -2,8 +2,7 @@
 
 #include <vector>
 
-#include "hwy/targets.h"
-
+#include "highway_targets.hpp"
 #include "render/lighting.hpp"
 #include "render/shade.hpp"
 #include "render/shadow_lookup.hpp"
@@ -53,17 +52,20 @@ TEST(ShadingShadow, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesSinglePoin
   }
   positions.emplace_back(40, 0, 0);
   normals.push_back(kUp);
-  hwy::SetSupportedTargetsForTest(0);
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  hwy::SetSupportedTargetsForTest(targets.back());
-  std::vector<float> reference(positions.size());
-  shadow_visibility_row(map, positions.data(), normals.data(), positions.size(), to_sun, reference.data());
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
+  const std::vector<float> reference = [&] {
+    const test::PinnedTarget portable(targets.back());
+    std::vector<float> r(positions.size());
+    shadow_visibility_row(map, positions.data(), normals.data(), positions.size(), to_sun, r.data());
+    return r;
+  }();
   EXPECT_EQ(reference.back(), 1.0f);  // outside the map
   int penumbra = 0;
   for (float r : reference) penumbra += r > 0.0f && r < 1.0f;
   EXPECT_GT(penumbra, 0);
   for (int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::PinnedTarget pinned(target);
     ASSERT_EQ(shadow_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<float> row(positions.size());
@@ -73,8 +75,6 @@ TEST(ShadingShadow, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesSinglePoin
       EXPECT_EQ(shadow_visibility(map, positions[i], normals[i], to_sun), reference[i]) << i;
     }
   }
-  hwy::SetSupportedTargetsForTest(0);
-  EXPECT_GE(targets.size(), 2u);
 }
 
 TEST(ShadingShadow, ShadowedPixelIsDarkerThanTheSameMaterialLit) {

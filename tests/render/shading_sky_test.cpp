@@ -3,8 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "hwy/targets.h"
-
+#include "highway_targets.hpp"
 #include "render/sky.hpp"
 #include "render/sky_fog.hpp"
 
@@ -90,14 +89,17 @@ TEST(ShadingSky, FogAmountsAreIdenticalOnEveryHighwayTargetAndForAnyBatchLength)
     points.emplace_back(float(i * 7 % 150) - 20.0f, float(i * 13 % 90), float(i % 9) * 4.0f - 6.0f + 1.5f);
   points.emplace_back(1, 2, 1.5f);      // at the camera: 0
   points.emplace_back(1, 2, 1.50001f);  // |k| below the series threshold
-  hwy::SetSupportedTargetsForTest(0);
-  const std::vector<int64_t> targets = hwy::SupportedAndGeneratedTargets();
-  hwy::SetSupportedTargetsForTest(targets.back());
-  std::vector<float> reference(points.size());
-  fog.amounts(points.data(), points.size(), reference.data());
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
+  const std::vector<float> reference = [&] {
+    const test::PinnedTarget portable(targets.back());
+    std::vector<float> r(points.size());
+    fog.amounts(points.data(), points.size(), r.data());
+    return r;
+  }();
   EXPECT_EQ(reference[37], 0.0f);
   for (int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    const test::PinnedTarget pinned(target);
     ASSERT_EQ(fog_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<float> all(points.size());
@@ -107,8 +109,6 @@ TEST(ShadingSky, FogAmountsAreIdenticalOnEveryHighwayTargetAndForAnyBatchLength)
       EXPECT_EQ(fog.amount(points[i]), reference[i]) << i;  // a batch of one
     }
   }
-  hwy::SetSupportedTargetsForTest(0);
-  EXPECT_GE(targets.size(), 2u);
 }
 
 TEST(ShadingSky, HemisphereLightIsSkyAboveGroundBelow) {
