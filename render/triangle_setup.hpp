@@ -77,7 +77,9 @@ struct SetupView {
 };
 
 /// Sets up one triangle: appends 0 or more RasterTris to `tris` (and one AlphaAttrib to
-/// `alphas` when masked and visible). Returns the number of RasterTris appended.
+/// `alphas` when masked and visible). Returns the number of RasterTris appended. A triangle that
+/// needs no clipping stores its vertices' snapped positions in them (SetupVertex::projected) for
+/// the next triangles sharing them.
 int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
                    std::vector<AlphaAttrib>& alphas, SetupCounters& counters);
 
