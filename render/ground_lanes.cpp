@@ -49,7 +49,6 @@ VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
 
 /// value_noise2 on lanes.
 VF value_noise2_lanes(VF x, VF y, uint32_t salt) {
-  const DF df;
   const DU du;
   const VF fx = hn::Floor(x), fy = hn::Floor(y);
   const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), fx)), iy = hn::BitCast(du, hn::ConvertTo(DI(), fy));
@@ -58,7 +57,6 @@ VF value_noise2_lanes(VF x, VF y, uint32_t salt) {
   const VF v00 = lattice_value_lanes(ix, iy, salt), v10 = lattice_value_lanes(hn::Add(ix, one), iy, salt);
   const VF v01 = lattice_value_lanes(ix, hn::Add(iy, one), salt);
   const VF v11 = lattice_value_lanes(hn::Add(ix, one), hn::Add(iy, one), salt);
-  (void)df;
   return mix_lanes(mix_lanes(v00, v10, wx), mix_lanes(v01, v11, wx), wy);
 }
 
