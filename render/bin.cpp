@@ -6,13 +6,10 @@ namespace silva::render {
 
 namespace {
 
-/// False when some edge is negative at all four corners of the pixel rectangle (no sample inside).
+/// False when some edge is negative over the whole pixel rectangle (no sample inside).
 bool may_cover(const RasterTri& t, int x0, int y0, int x1, int y1) {
-  for (const PixelPlane& e : t.edge) {
-    const double top = std::max(e.at(x0, y0), e.at(x1, y0));
-    const double bottom = std::max(e.at(x0, y1), e.at(x1, y1));
-    if (std::max(top, bottom) < 0.0) return false;
-  }
+  for (const PixelPlane& e : t.edge)
+    if (e.max_over(x0, y0, x1, y1) < 0.0) return false;
   return true;
 }
 
@@ -45,10 +42,12 @@ void GeometryStore::bin_from(size_t first, const TileGrid& grid) {
     const bool single = tx0 == tx1 && ty0 == ty1;
     for (int ty = ty0; ty <= ty1; ++ty) {
       for (int tx = tx0; tx <= tx1; ++tx) {
-        if (!single && !may_cover(t, std::max(t.x0, tx * ts), std::max(t.y0, ty * ts),
-                                  std::min(t.x1, tx * ts + ts - 1), std::min(t.y1, ty * ts + ts - 1)))
-          continue;
-        bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(uint32_t(i));
+        const int x0 = std::max(t.x0, tx * ts), x1 = std::min(t.x1, tx * ts + ts - 1);
+        const int y0 = std::max(t.y0, ty * ts), y1 = std::min(t.y1, ty * ts + ts - 1);
+        if (!single && !may_cover(t, x0, y0, x1, y1)) continue;
+        bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(
+            BinEntry{t.depth_max, uint32_t(i), uint8_t(x0 - tx * ts), uint8_t(y0 - ty * ts), uint8_t(x1 - tx * ts),
+                     uint8_t(y1 - ty * ts)});
         ++bin_entries;
       }
     }

@@ -21,12 +21,12 @@ struct TileGrid {
   int count() const { return tiles_x * tiles_y; }
 };
 
-/// One worker's set-up triangles and, per tile, the indices of those that touch it.
+/// One worker's set-up triangles and, per tile, entries of those that touch it.
 /// Lives in thread-local storage and keeps its capacity from frame to frame.
 struct GeometryStore {
   std::vector<RasterTri> tris;              ///< Set-up screen triangles.
   std::vector<AlphaAttrib> alphas;          ///< Alpha-test data referenced by tris.
-  std::vector<std::vector<uint32_t>> bins;  ///< Per tile: indices into tris.
+  std::vector<std::vector<BinEntry>> bins;  ///< Per tile: the triangles that may cover its samples.
   SetupCounters counters;                   ///< Front-end counters.
   uint64_t bin_entries = 0;                 ///< (triangle, tile) pairs added.
   VertexCache vertices;                     ///< Transformed vertices of the item being set up.

@@ -21,6 +21,16 @@ struct RasterTri {
   uint32_t alpha = kNoAlpha;  ///< Index of the AlphaAttrib in the same store, or kNoAlpha.
 };
 
+/// A triangle's entry in one tile's bin: its index plus what the early depth test needs, so a
+/// triangle behind everything in the blocks it touches is rejected without reading its RasterTri.
+struct BinEntry {
+  double depth_max = 0;  ///< RasterTri::depth_max.
+  uint32_t index = 0;    ///< Index of the RasterTri in its store.
+  uint8_t x0 = 0, y0 = 0;  ///< First candidate pixel inside the tile, tile-local (tiles are <= 256 px).
+  uint8_t x1 = 0, y1 = 0;  ///< Last candidate pixel inside the tile, tile-local, inclusive.
+};
+static_assert(sizeof(BinEntry) == 16, "bins hold 4 entries per cache line");
+
 /// What alpha testing needs at a pixel: barycentric planes, vertex uvs and the mask. At pixel
 /// (x, y): b1 = n1.at/den.at, b2 = n2.at/den.at, uv = uv0 + b1 (uv1 - uv0) + b2 (uv2 - uv0) in
 /// double, then mask->opaque(float(u), float(v)) (nearest texel, repeat wrap).

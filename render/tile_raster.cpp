@@ -91,79 +91,104 @@ M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
   return hn::LoadMaskBits(d, opaque_bits);
 }
 
-/// Rasterises one triangle into the blocks of the tile it overlaps.
-void raster_triangle(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
-                     TileCounters& counters) {
-  const DTag d;
-  const hn::RebindToUnsigned<DTag> du;
+/// Depth-tests and writes the covered lanes `in` of one row segment (pixels x.. of tile row y,
+/// image x coordinates vx); alpha-tests the lanes that would win first. Returns true on a write.
+template <class D, class V, class M>
+bool write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
+                   TileCounters& counters, int x, int y, V vx, M in) {
+  const hn::RebindToUnsigned<D> du;
   const size_t N = hn::Lanes(d);
-  const int lx0 = std::max(t.x0 - job.x0, 0), lx1 = std::min(t.x1 - job.x0, job.w - 1);
-  const int ly0 = std::max(t.y0 - job.y0, 0), ly1 = std::min(t.y1 - job.y0, job.h - 1);
-  if (lx0 > lx1 || ly0 > ly1) return;
-  const int block_stride = job.stride / kDepthBlockSize;
-  const auto zero = hn::Zero(d);
-  const auto iota = hn::Iota(d, 0.0);
-  const auto ea0 = hn::Set(d, t.edge[0].a), ea1 = hn::Set(d, t.edge[1].a), ea2 = hn::Set(d, t.edge[2].a);
-  const auto da = hn::Set(d, t.depth.a);
-  const auto key = hn::Set(du, t.key);
+  counters.fragments += hn::CountTrue(d, in);
+  const double py = double(job.y0 + y);
+  const auto depth = hn::Add(hn::Set(d, t.depth.c + t.depth.b * py), hn::Mul(hn::Set(d, t.depth.a), vx));
+  const size_t off = size_t(y) * size_t(job.stride) + size_t(x);
+  double* dp = s.depth.data() + off;
+  uint64_t* kp = s.key.data() + off;
+  const auto stored = hn::LoadU(d, dp);
+  auto win = hn::And(in, hn::Gt(depth, stored));
+  auto tie = hn::And(in, hn::Eq(depth, stored));
+  if (alpha != nullptr) {
+    if (hn::AllFalse(d, hn::Or(win, tie))) return false;
+    const auto opaque = opaque_lanes(d, *alpha, vx, py, hn::Or(win, tie));
+    win = hn::And(win, opaque);
+    tie = hn::And(tie, opaque);
+  }
+  if (hn::AllFalse(d, tie)) {
+    hn::BlendedStore(depth, win, d, dp);
+    hn::BlendedStore(hn::Set(du, t.key), hn::RebindMask(du, win), du, kp);
+    const size_t n = hn::CountTrue(d, win);
+    counters.writes += n;
+    return n > 0;
+  }
   alignas(64) double dv[kDepthBlockSize];
   uint8_t win_bits[8], tie_bits[8];
-  for (int by = ly0 / kDepthBlockSize; by <= ly1 / kDepthBlockSize; ++by) {
-    for (int bx = lx0 / kDepthBlockSize; bx <= lx1 / kDepthBlockSize; ++bx) {
-      double& bmin = s.block_min[size_t(by) * size_t(block_stride) + size_t(bx)];
-      if (t.depth_max < bmin) continue;  // behind everything already in this block
-      bool wrote = false;
-      const int bx0 = bx * kDepthBlockSize;
-      const int x_begin = bx0 + int((std::max(lx0, bx0) - bx0) / int(N) * int(N));
-      const int x_end = std::min({bx0 + kDepthBlockSize, lx1 + 1, job.w});
-      const int y_end = std::min((by + 1) * kDepthBlockSize - 1, ly1);
-      for (int y = std::max(ly0, by * kDepthBlockSize); y <= y_end; ++y) {
-        const double py = double(job.y0 + y);
-        const auto e0_row = hn::Set(d, t.edge[0].c + t.edge[0].b * py);
-        const auto e1_row = hn::Set(d, t.edge[1].c + t.edge[1].b * py);
-        const auto e2_row = hn::Set(d, t.edge[2].c + t.edge[2].b * py);
-        const auto d_row = hn::Set(d, t.depth.c + t.depth.b * py);
-        for (int x = x_begin; x < x_end; x += int(N)) {
-          const double px0 = double(job.x0 + x);
-          const auto vx = hn::Add(hn::Set(d, px0), iota);
-          auto in = hn::Ge(hn::Add(e0_row, hn::Mul(ea0, vx)), zero);
-          in = hn::And(in, hn::Ge(hn::Add(e1_row, hn::Mul(ea1, vx)), zero));
-          in = hn::And(in, hn::Ge(hn::Add(e2_row, hn::Mul(ea2, vx)), zero));
-          if (x + int(N) > x_end) in = hn::And(in, hn::FirstN(d, size_t(x_end - x)));
-          if (hn::AllFalse(d, in)) continue;
-          counters.fragments += hn::CountTrue(d, in);
-          const auto depth = hn::Add(d_row, hn::Mul(da, vx));
-          const size_t off = size_t(y) * size_t(job.stride) + size_t(x);
-          double* dp = s.depth.data() + off;
-          uint64_t* kp = s.key.data() + off;
-          const auto stored = hn::LoadU(d, dp);
-          auto win = hn::And(in, hn::Gt(depth, stored));
-          auto tie = hn::And(in, hn::Eq(depth, stored));
-          if (alpha != nullptr) {
-            if (hn::AllFalse(d, hn::Or(win, tie))) continue;
-            const auto opaque = opaque_lanes(d, *alpha, vx, py, hn::Or(win, tie));
-            win = hn::And(win, opaque);
-            tie = hn::And(tie, opaque);
-          }
-          if (hn::AllFalse(d, tie)) {
-            if (hn::AllFalse(d, win)) continue;
-            hn::BlendedStore(depth, win, d, dp);
-            hn::BlendedStore(key, hn::RebindMask(du, win), du, kp);
-            counters.writes += hn::CountTrue(d, win);
-            wrote = true;
-            continue;
-          }
-          hn::Store(depth, d, dv);
-          hn::StoreMaskBits(d, win, win_bits);
-          hn::StoreMaskBits(d, tie, tie_bits);
-          const uint64_t n = write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp);
-          counters.writes += n;
-          wrote = wrote || n > 0;
-        }
-      }
-      if (wrote) bmin = block_minimum(s, job, bx, by);
+  hn::Store(depth, d, dv);
+  hn::StoreMaskBits(d, win, win_bits);
+  hn::StoreMaskBits(d, tie, tie_bits);
+  const uint64_t n = write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp);
+  counters.writes += n;
+  return n > 0;
+}
+
+/// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
+/// one 8x8 block, unless it lies outside one of its edges over that whole part. Edge values step
+/// down the rows by exact additions (integer-valued doubles). Returns true when it wrote a pixel.
+bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
+                  TileCounters& counters, int x_first, int x_last, int y_begin, int y_end) {
+  const DTag d;
+  const int N = int(hn::Lanes(d));
+  const int ix0 = job.x0 + x_first, ix1 = job.x0 + x_last, iy0 = job.y0 + y_begin, iy1 = job.y0 + y_end;
+  for (const PixelPlane& e : t.edge)
+    if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;  // exact: integer-valued doubles
+  const auto zero = hn::Zero(d);
+  const auto eb0 = hn::Set(d, t.edge[0].b), eb1 = hn::Set(d, t.edge[1].b), eb2 = hn::Set(d, t.edge[2].b);
+  const double py0 = double(iy0);
+  const int block_x0 = x_first / kDepthBlockSize * kDepthBlockSize;
+  bool wrote = false;
+  for (int x = block_x0 + (x_first - block_x0) / N * N; x <= x_last; x += N) {
+    const auto vx = hn::Add(hn::Set(d, double(job.x0 + x)), hn::Iota(d, 0.0));
+    auto e0 = hn::Add(hn::Set(d, t.edge[0].c + t.edge[0].b * py0), hn::Mul(hn::Set(d, t.edge[0].a), vx));
+    auto e1 = hn::Add(hn::Set(d, t.edge[1].c + t.edge[1].b * py0), hn::Mul(hn::Set(d, t.edge[1].a), vx));
+    auto e2 = hn::Add(hn::Set(d, t.edge[2].c + t.edge[2].b * py0), hn::Mul(hn::Set(d, t.edge[2].a), vx));
+    auto lanes = hn::FirstN(d, size_t(std::min(x_last + 1 - x, N)));
+    if (x < x_first) lanes = hn::AndNot(hn::FirstN(d, size_t(x_first - x)), lanes);
+    for (int y = y_begin; y <= y_end; ++y, e0 = hn::Add(e0, eb0), e1 = hn::Add(e1, eb1), e2 = hn::Add(e2, eb2)) {
+      const auto in = hn::And(hn::And(lanes, hn::Ge(e0, zero)), hn::And(hn::Ge(e1, zero), hn::Ge(e2, zero)));
+      if (hn::AllFalse(d, in)) continue;
+      wrote = write_segment(d, t, alpha, job, s, counters, x, y, vx, in) || wrote;
     }
   }
+  return wrote;
+}
+
+/// Rasterises one bin entry into the 8x8 blocks of the tile it overlaps, skipping the blocks
+/// where it lies behind everything already drawn; its RasterTri is only read for the others.
+void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, TileScratch& s,
+                  TileCounters& counters) {
+  const int block_stride = job.stride / kDepthBlockSize;
+  const RasterTri* t = nullptr;
+  const AlphaAttrib* alpha = nullptr;
+  for (int by = e.y0 / kDepthBlockSize; by <= e.y1 / kDepthBlockSize; ++by) {
+    const int y_begin = std::max(int(e.y0), by * kDepthBlockSize), y_end = std::min((by + 1) * kDepthBlockSize - 1, int(e.y1));
+    for (int bx = e.x0 / kDepthBlockSize; bx <= e.x1 / kDepthBlockSize; ++bx) {
+      double& bmin = s.block_min[size_t(by) * size_t(block_stride) + size_t(bx)];
+      if (e.depth_max < bmin) continue;  // behind everything already in this block
+      if (t == nullptr) {
+        t = &src.tris[e.index];
+        alpha = t->alpha == kNoAlpha ? nullptr : &src.alphas[t->alpha];
+      }
+      const int x_first = std::max(int(e.x0), bx * kDepthBlockSize);
+      const int x_last = std::min((bx + 1) * kDepthBlockSize - 1, int(e.x1));
+      if (raster_block(*t, alpha, job, s, counters, x_first, x_last, y_begin, y_end)) bmin = block_minimum(s, job, bx, by);
+    }
+  }
+}
+
+/// False when the entry lies behind everything already drawn in its first block (a hint: blocks
+/// only get nearer, so it will most likely be rejected there and in its other blocks).
+bool might_draw(const BinEntry& e, const TileJob& job, const TileScratch& s) {
+  const int block_stride = job.stride / kDepthBlockSize;
+  return e.depth_max >= s.block_min[size_t(e.y0 / kDepthBlockSize) * size_t(block_stride) + size_t(e.x0 / kDepthBlockSize)];
 }
 
 /// Clears the tile and rasterises every source triangle into it.
@@ -177,14 +202,14 @@ void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t sou
   for (size_t k = 0; k < source_count; ++k) {
     const TileSource& src = sources[k];
     for (size_t i = 0; i < src.count; ++i) {
-      // A tile's triangles lie scattered over the worker's store: fetch ahead of use.
-      if (i + kPrefetchDistance < src.count) {
-        const char* ahead = reinterpret_cast<const char*>(&src.tris[src.indices[i + kPrefetchDistance]]);
+      // A tile's triangles lie scattered over the worker's store: fetch ahead of use the ones
+      // not already hidden in their first block.
+      if (i + kPrefetchDistance < src.count && might_draw(src.entries[i + kPrefetchDistance], job, s)) {
+        const char* ahead = reinterpret_cast<const char*>(&src.tris[src.entries[i + kPrefetchDistance].index]);
         for (size_t b = 0; b < sizeof(RasterTri); b += 64) hwy::Prefetch(ahead + b);
         hwy::Prefetch(ahead + sizeof(RasterTri) - 1);
       }
-      const RasterTri& t = src.tris[src.indices[i]];
-      raster_triangle(t, t.alpha == kNoAlpha ? nullptr : &src.alphas[t.alpha], job, s, counters);
+      raster_entry(src.entries[i], src, job, s, counters);
     }
   }
 }

@@ -13,8 +13,8 @@ namespace silva::render {
 struct TileSource {
   const RasterTri* tris = nullptr;      ///< The worker's triangles.
   const AlphaAttrib* alphas = nullptr;  ///< The worker's alpha data.
-  const uint32_t* indices = nullptr;    ///< Indices into tris binned to this tile.
-  size_t count = 0;                     ///< Number of indices.
+  const BinEntry* entries = nullptr;    ///< The worker's bin of this tile (entries index tris).
+  size_t count = 0;                     ///< Number of entries.
 };
 
 /// Where a tile lies and how it starts.

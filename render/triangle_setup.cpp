@@ -134,11 +134,14 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     const int64_t x1 = std::min<int64_t>(view.width - 1, floor_div(max_x - kHalf, kSubpixelScale));
     const int64_t y1 = std::min<int64_t>(view.height - 1, floor_div(max_y - kHalf, kSubpixelScale));
     if (x0 > x1 || y0 > y1) continue;  // covers no sample centre
-    RasterTri t;
+    RasterTri& t = tris.emplace_back();  // filled in place: RasterTri is large
     t.edge[0] = edge_plane(a, b);
     t.edge[1] = edge_plane(b, c);
     t.edge[2] = edge_plane(c, a);
-    if (x0 == x1 && y0 == y1 && !covers(t.edge, int(x0), int(y0))) continue;  // one candidate, missed
+    if (x0 == x1 && y0 == y1 && !covers(t.edge, int(x0), int(y0))) {  // one candidate, missed
+      tris.pop_back();
+      continue;
+    }
     if (!shared.ready) {
       shared.ready = true;
       shared.depth = view.depth_plane(p0, n);
@@ -146,14 +149,13 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
       const double span = std::abs(d.c) + std::abs(d.a) * double(view.width) + std::abs(d.b) * double(view.height);
       shared.depth_max = vertex_depth_max + std::abs(d.a) + std::abs(d.b) + 1e-9 * (span + std::abs(vertex_depth_max));
       if (in.mask) {
-        AlphaAttrib at;
+        shared.alpha = uint32_t(alphas.size());
+        AlphaAttrib& at = alphas.emplace_back();
         view.barycentric_planes(p0, p1, p2, at.n1, at.n2, at.den);
         at.uv0 = *in.uv[0];
         at.uv1 = *in.uv[1];
         at.uv2 = *in.uv[2];
         at.mask = in.mask;
-        shared.alpha = uint32_t(alphas.size());
-        alphas.push_back(at);
       }
     }
     t.depth = shared.depth;
@@ -164,7 +166,6 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     t.y1 = int32_t(y1);
     t.key = in.key;
     t.alpha = shared.alpha;
-    tris.push_back(t);
     ++emitted;
   }
   counters.emitted += uint64_t(emitted);
