@@ -36,15 +36,11 @@ GBuffer render_card_over_ground(const Camera& cam, Mesh card) {
   return g;
 }
 
-TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
+/// Renders a frontal card at z = 2 over x, y in [-1.5, 1.5] with uvs 0..2 (repeat wrap) masked by
+/// `mask`, and checks every pixel away from texel borders against AlphaMask::opaque. Returns the
+/// numbers of opaque and hole pixels seen.
+std::pair<int, int> expect_card_follows_mask(const std::shared_ptr<const AlphaMask>& mask) {
   const Camera cam = screen_camera(128, 96);
-  auto mask = std::make_shared<AlphaMask>();
-  mask->width = 8;
-  mask->height = 8;
-  std::mt19937 gen(5);
-  for (int i = 0; i < 64; ++i) mask->alpha.push_back(uint8_t(gen() % 256));
-  mask->cutoff = 0.5f;
-  // A frontal card at z = 2 over x, y in [-1.5, 1.5] with uvs 0..2 (repeat wrap), seen from its front.
   Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::TreeCanopy,
                               false, mask);
   card.uvs = {Vec2f(0, 0), Vec2f(0, 2), Vec2f(2, 2), Vec2f(2, 0)};
@@ -56,17 +52,50 @@ TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
       if (std::abs(d.x()) > 1.49 || std::abs(d.y()) > 1.49) continue;
       // uv: u runs with x (0 at x = -1.5 to 2 at x = 1.5), v with y.
       const double tu = (d.x() + 1.5) / 3.0 * 2.0, tv = (d.y() + 1.5) / 3.0 * 2.0;
-      const double fu = tu * 8.0, fv = tv * 8.0;
+      const double fu = tu * mask->width, fv = tv * mask->height;
       if (std::abs(fu - std::round(fu)) < 1e-3 || std::abs(fv - std::round(fv)) < 1e-3) continue;  // texel border
       const bool want = mask->opaque(float(tu), float(tv));
       const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
-      ASSERT_EQ(g.role[i], want ? Role::TreeCanopy : Role::Ground) << u << "," << v;
-      ASSERT_EQ(g.instance_id[i], want ? 7u : 0u);
-      ASSERT_FLOAT_EQ(g.depth[i], want ? 2.0f : 5.0f);
+      EXPECT_EQ(g.role[i], want ? Role::TreeCanopy : Role::Ground) << u << "," << v;
+      EXPECT_EQ(g.instance_id[i], want ? 7u : 0u);
+      EXPECT_FLOAT_EQ(g.depth[i], want ? 2.0f : 5.0f);
+      if (::testing::Test::HasFailure()) return {opaque, holes};
       (want ? opaque : holes)++;
     }
+  return {opaque, holes};
+}
+
+/// A width x height mask with the given alpha bytes and cutoff 0.5.
+std::shared_ptr<const AlphaMask> make_mask(int width, int height, std::vector<uint8_t> alpha) {
+  auto mask = std::make_shared<AlphaMask>();
+  mask->width = width;
+  mask->height = height;
+  mask->alpha = std::move(alpha);
+  mask->cutoff = 0.5f;
+  return mask;
+}
+
+TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
+  std::mt19937 gen(5);
+  std::vector<uint8_t> alpha;
+  for (int i = 0; i < 64; ++i) alpha.push_back(uint8_t(gen() % 256));
+  const auto [opaque, holes] = expect_card_follows_mask(make_mask(8, 8, alpha));
   EXPECT_GT(opaque, 500);
   EXPECT_GT(holes, 500);
+}
+
+TEST(RasterLabels, TinyMasksAreReadInsideTheirTexels) {
+  // 1..5 texels across: every lane must read its own texel, the first and last included;
+  // 127 and 128 sit on either side of the cutoff (127.5).
+  for (const auto& alpha : std::vector<std::vector<uint8_t>>{
+           {255}, {128, 127}, {127, 255, 0}, {255, 0, 0, 128}, {0, 255, 127, 0, 255}}) {
+    SCOPED_TRACE(alpha.size());
+    const auto [opaque, holes] = expect_card_follows_mask(make_mask(int(alpha.size()), 1, alpha));
+    EXPECT_GT(opaque, 500);
+    if (alpha.size() > 1) {
+      EXPECT_GT(holes, 500);
+    }
+  }
 }
 
 TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {
