@@ -8,7 +8,7 @@ namespace {
 
 /// False when some edge is negative over the whole pixel rectangle (no sample inside).
 bool may_cover(const RasterTri& t, int x0, int y0, int x1, int y1) {
-  for (const PixelPlane& e : t.edge)
+  for (const EdgeFunction& e : t.edge)
     if (e.max_over(x0, y0, x1, y1) < 0.0) return false;
   return true;
 }
@@ -34,22 +34,19 @@ void GeometryStore::reset(int tile_count) {
   bin_entries = 0;
 }
 
-void GeometryStore::bin_from(size_t first, const TileGrid& grid) {
+void GeometryStore::bin(uint32_t index, const TriBounds& b, const TileGrid& grid) {
+  const RasterTri& t = tris[index];
   const int ts = grid.tile_size;
-  for (size_t i = first; i < tris.size(); ++i) {
-    const RasterTri& t = tris[i];
-    const int tx0 = t.x0 / ts, tx1 = t.x1 / ts, ty0 = t.y0 / ts, ty1 = t.y1 / ts;
-    const bool single = tx0 == tx1 && ty0 == ty1;
-    for (int ty = ty0; ty <= ty1; ++ty) {
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        const int x0 = std::max(t.x0, tx * ts), x1 = std::min(t.x1, tx * ts + ts - 1);
-        const int y0 = std::max(t.y0, ty * ts), y1 = std::min(t.y1, ty * ts + ts - 1);
-        if (!single && !may_cover(t, x0, y0, x1, y1)) continue;
-        bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(
-            BinEntry{t.depth_max, uint32_t(i), uint8_t(x0 - tx * ts), uint8_t(y0 - ty * ts), uint8_t(x1 - tx * ts),
-                     uint8_t(y1 - ty * ts)});
-        ++bin_entries;
-      }
+  const int tx0 = b.x0 / ts, tx1 = b.x1 / ts, ty0 = b.y0 / ts, ty1 = b.y1 / ts;
+  const bool single = tx0 == tx1 && ty0 == ty1;
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const int x0 = std::max(b.x0, tx * ts), x1 = std::min(b.x1, tx * ts + ts - 1);
+      const int y0 = std::max(b.y0, ty * ts), y1 = std::min(b.y1, ty * ts + ts - 1);
+      if (!single && !may_cover(t, x0, y0, x1, y1)) continue;
+      bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(BinEntry{
+          b.depth_max, index, uint8_t(x0 - tx * ts), uint8_t(y0 - ty * ts), uint8_t(x1 - tx * ts), uint8_t(y1 - ty * ts)});
+      ++bin_entries;
     }
   }
 }

@@ -32,8 +32,8 @@ struct GeometryStore {
   VertexCache vertices;                     ///< Transformed vertices of the item being set up.
   /// Empties the store for a new pass over `tile_count` tiles (keeps capacity).
   void reset(int tile_count);
-  /// Adds tris[first..end) to the bins of every tile whose samples they may cover.
-  void bin_from(size_t first, const TileGrid& grid);
+  /// Adds tris[index] (with its bounds) to the bins of every tile whose samples it may cover.
+  void bin(uint32_t index, const TriBounds& bounds, const TileGrid& grid);
 };
 
 }  // namespace silva::render

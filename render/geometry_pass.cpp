@@ -44,6 +44,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   const size_t vertex_count = mesh.positions.size();
   TriangleInput in;
   in.inside_view = item.inside_view;
+  TriBounds bounds[kMaxSetupTriangles];
   store.vertices.begin_item(vertex_count);
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
@@ -61,7 +62,8 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
       }
       in.key = (uint64_t(item.instance) << 32) | t;
       const size_t first = store.tris.size();
-      if (setup_triangle(sv, in, store.tris, store.alphas, store.counters) > 0) store.bin_from(first, grid);
+      const int emitted = setup_triangle(sv, in, store.tris, store.alphas, bounds, store.counters);
+      for (int k = 0; k < emitted; ++k) store.bin(uint32_t(first + size_t(k)), bounds[k], grid);
     }
   }
 }

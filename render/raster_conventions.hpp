@@ -41,8 +41,11 @@
 ///     lower. That is a total order, so the result does not depend on submission order,
 ///     binning order or thread count. Perspective views start at d = 1/far: z <= far is a hit.
 ///   - Early rejection: each 8x8 block keeps the minimum stored d; a triangle whose conservative
-///     maximum d is below it is skipped for that block (never changes the result). Instances
-///     are drawn nearest first (by their bounding spheres) so more blocks are full early.
+///     maximum d is below it is skipped for that block (never changes the result), and so is a
+///     block where one edge function is negative over the whole part the triangle's bounds cover.
+///     Bin entries carry the maximum d and the bounds, so a triangle hidden in every block it
+///     touches is skipped without reading its RasterTri. Instances are drawn nearest first (by
+///     their bounding spheres) so more blocks are full early.
 ///   - The G-buffer's metric depth is not read back from d: the resolve re-intersects the pixel's
 ///     centre ray with the stored triangle in double.
 #include <cstdint>

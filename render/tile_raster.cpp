@@ -138,18 +138,19 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   const DTag d;
   const int N = int(hn::Lanes(d));
   const int ix0 = job.x0 + x_first, ix1 = job.x0 + x_last, iy0 = job.y0 + y_begin, iy1 = job.y0 + y_end;
-  for (const PixelPlane& e : t.edge)
-    if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;  // exact: integer-valued doubles
+  for (const EdgeFunction& e : t.edge)
+    if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;
   const auto zero = hn::Zero(d);
-  const auto eb0 = hn::Set(d, t.edge[0].b), eb1 = hn::Set(d, t.edge[1].b), eb2 = hn::Set(d, t.edge[2].b);
+  const double b0 = t.edge[0].b(), b1 = t.edge[1].b(), b2 = t.edge[2].b();
+  const auto eb0 = hn::Set(d, b0), eb1 = hn::Set(d, b1), eb2 = hn::Set(d, b2);
   const double py0 = double(iy0);
   const int block_x0 = x_first / kDepthBlockSize * kDepthBlockSize;
   bool wrote = false;
   for (int x = block_x0 + (x_first - block_x0) / N * N; x <= x_last; x += N) {
     const auto vx = hn::Add(hn::Set(d, double(job.x0 + x)), hn::Iota(d, 0.0));
-    auto e0 = hn::Add(hn::Set(d, t.edge[0].c + t.edge[0].b * py0), hn::Mul(hn::Set(d, t.edge[0].a), vx));
-    auto e1 = hn::Add(hn::Set(d, t.edge[1].c + t.edge[1].b * py0), hn::Mul(hn::Set(d, t.edge[1].a), vx));
-    auto e2 = hn::Add(hn::Set(d, t.edge[2].c + t.edge[2].b * py0), hn::Mul(hn::Set(d, t.edge[2].a), vx));
+    auto e0 = hn::Add(hn::Set(d, t.edge[0].c + b0 * py0), hn::Mul(hn::Set(d, t.edge[0].a()), vx));
+    auto e1 = hn::Add(hn::Set(d, t.edge[1].c + b1 * py0), hn::Mul(hn::Set(d, t.edge[1].a()), vx));
+    auto e2 = hn::Add(hn::Set(d, t.edge[2].c + b2 * py0), hn::Mul(hn::Set(d, t.edge[2].a()), vx));
     auto lanes = hn::FirstN(d, size_t(std::min(x_last + 1 - x, N)));
     if (x < x_first) lanes = hn::AndNot(hn::FirstN(d, size_t(x_first - x)), lanes);
     for (int y = y_begin; y <= y_end; ++y, e0 = hn::Add(e0, eb0), e1 = hn::Add(e1, eb1), e2 = hn::Add(e2, eb2)) {

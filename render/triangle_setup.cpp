@@ -37,16 +37,16 @@ double plane_value(const Vec4d& plane, const Vec3d& p) {
 }
 
 /// Edge function of a->b (A > 0 orientation) with its fill-rule bias, over pixel indices.
-PixelPlane edge_plane(const Snapped& a, const Snapped& b) {
+EdgeFunction edge_function(const Snapped& a, const Snapped& b) {
   const int64_t dx = b.x - a.x, dy = b.y - a.y;
   const bool top_left = dy < 0 || (dy == 0 && dx > 0);
   const int64_t c = dx * (kHalf - a.y) - dy * (kHalf - a.x) - (top_left ? 0 : 1);
-  return PixelPlane{double(c), double(-kSubpixelScale * dy), double(kSubpixelScale * dx)};
+  return EdgeFunction{double(c), int32_t(dx), int32_t(dy)};
 }
 
 /// True when all three (exact) edge values are inside at pixel (x, y).
-bool covers(const PixelPlane (&edge)[3], int x, int y) {
-  for (const PixelPlane& e : edge)
+bool covers(const EdgeFunction (&edge)[3], int x, int y) {
+  for (const EdgeFunction& e : edge)
     if (e.at(double(x), double(y)) < 0.0) return false;
   return true;
 }
@@ -67,7 +67,7 @@ SetupView::SetupView(const ViewProjection& v) : view(v) {
 }
 
 int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
-                   std::vector<AlphaAttrib>& alphas, SetupCounters& counters) {
+                   std::vector<AlphaAttrib>& alphas, TriBounds (&bounds)[kMaxSetupTriangles], SetupCounters& counters) {
   const ViewProjection& view = sv.view;
   const Vec3d& p0 = in.v[0]->p;
   const Vec3d& p1 = in.v[1]->p;
@@ -135,9 +135,9 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     const int64_t y1 = std::min<int64_t>(view.height - 1, floor_div(max_y - kHalf, kSubpixelScale));
     if (x0 > x1 || y0 > y1) continue;  // covers no sample centre
     RasterTri& t = tris.emplace_back();  // filled in place: RasterTri is large
-    t.edge[0] = edge_plane(a, b);
-    t.edge[1] = edge_plane(b, c);
-    t.edge[2] = edge_plane(c, a);
+    t.edge[0] = edge_function(a, b);
+    t.edge[1] = edge_function(b, c);
+    t.edge[2] = edge_function(c, a);
     if (x0 == x1 && y0 == y1 && !covers(t.edge, int(x0), int(y0))) {  // one candidate, missed
       tris.pop_back();
       continue;
@@ -159,14 +159,9 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
       }
     }
     t.depth = shared.depth;
-    t.depth_max = shared.depth_max;
-    t.x0 = int32_t(x0);
-    t.y0 = int32_t(y0);
-    t.x1 = int32_t(x1);
-    t.y1 = int32_t(y1);
     t.key = in.key;
     t.alpha = shared.alpha;
-    ++emitted;
+    bounds[emitted++] = TriBounds{int32_t(x0), int32_t(y0), int32_t(x1), int32_t(y1), shared.depth_max};
   }
   counters.emitted += uint64_t(emitted);
   return emitted;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/clip.hpp"
 #include "render/raster_triangle.hpp"
 #include "render/view_projection.hpp"
 
@@ -76,11 +77,14 @@ struct SetupView {
   explicit SetupView(const ViewProjection& v);
 };
 
+/// Most screen triangles one mesh triangle can become (the fan of its clipped polygon).
+inline constexpr int kMaxSetupTriangles = kMaxClippedVertices - 2;
+
 /// Sets up one triangle: appends 0 or more RasterTris to `tris` (and one AlphaAttrib to
-/// `alphas` when masked and visible). Returns the number of RasterTris appended. A triangle that
-/// needs no clipping stores its vertices' snapped positions in them (SetupVertex::projected) for
-/// the next triangles sharing them.
+/// `alphas` when masked and visible) and writes the bounds of each to `bounds[0..n)`. Returns the
+/// number n of RasterTris appended. A triangle that needs no clipping stores its vertices'
+/// snapped positions in them (SetupVertex::projected) for the next triangles sharing them.
 int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
-                   std::vector<AlphaAttrib>& alphas, SetupCounters& counters);
+                   std::vector<AlphaAttrib>& alphas, TriBounds (&bounds)[kMaxSetupTriangles], SetupCounters& counters);
 
 }  // namespace silva::render

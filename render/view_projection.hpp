@@ -17,9 +17,6 @@ struct PixelPlane {
   double b = 0;  ///< Change per pixel down.
   /// Value at pixel (x, y)'s centre, evaluated in the rasteriser's fixed order.
   double at(double x, double y) const { return (c + b * y) + a * x; }
-  /// Largest value over the pixel rectangle [x0, x1] x [y0, y1]: the value at the corner the
-  /// gradient points to.
-  double max_over(int x0, int y0, int x1, int y1) const { return at(a >= 0.0 ? x1 : x0, b >= 0.0 ? y1 : y0); }
 };
 
 /// A view: world -> view transform plus a perspective or orthographic projection (see
