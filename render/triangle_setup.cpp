@@ -134,14 +134,8 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     const int64_t x1 = std::min<int64_t>(view.width - 1, floor_div(max_x - kHalf, kSubpixelScale));
     const int64_t y1 = std::min<int64_t>(view.height - 1, floor_div(max_y - kHalf, kSubpixelScale));
     if (x0 > x1 || y0 > y1) continue;  // covers no sample centre
-    RasterTri& t = tris.emplace_back();  // filled in place: RasterTri is large
-    t.edge[0] = edge_function(a, b);
-    t.edge[1] = edge_function(b, c);
-    t.edge[2] = edge_function(c, a);
-    if (x0 == x1 && y0 == y1 && !covers(t.edge, int(x0), int(y0))) {  // one candidate, missed
-      tris.pop_back();
-      continue;
-    }
+    const EdgeFunction edge[3] = {edge_function(a, b), edge_function(b, c), edge_function(c, a)};
+    if (x0 == x1 && y0 == y1 && !covers(edge, int(x0), int(y0))) continue;  // one candidate, missed
     if (!shared.ready) {
       shared.ready = true;
       shared.depth = view.depth_plane(p0, n);
@@ -158,9 +152,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
         at.mask = in.mask;
       }
     }
-    t.depth = shared.depth;
-    t.key = in.key;
-    t.alpha = shared.alpha;
+    tris.push_back(RasterTri{{edge[0], edge[1], edge[2]}, shared.depth, in.key, shared.alpha});
     bounds[emitted++] = TriBounds{int32_t(x0), int32_t(y0), int32_t(x1), int32_t(y1), shared.depth_max};
   }
   counters.emitted += uint64_t(emitted);
