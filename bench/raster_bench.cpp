@@ -3,11 +3,14 @@
 // triangles with alpha-tested leaf cards), 1 and 2 threads. Fixed seed; work counts beside times.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <vector>
 
 #include <tbb/task_arena.h>
 
 #include "bench/forest_scene.hpp"
+#include "render/raster_conventions.hpp"
 #include "render/renderer.hpp"
 
 namespace {
@@ -27,6 +30,17 @@ void report(benchmark::State& state, const RenderStats& s, double cold_ms) {
   state.counters["ms_per_frame"] = benchmark::Counter(1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   state.counters["Mtri_per_s"] = benchmark::Counter(double(s.triangles_submitted) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["Mpix_per_s"] = benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+/// Number of distinct (instance, triangle) pairs that own at least one pixel of `vis`: how much
+/// of the rasterised geometry ends up visible.
+double visible_triangles(const VisibilityBuffer& vis) {
+  std::vector<uint64_t> keys;
+  keys.reserve(vis.size());
+  for (size_t i = 0; i < vis.size(); ++i)
+    if (vis.instance[i] != kNoInstance) keys.push_back(uint64_t(vis.instance[i]) << 32 | vis.triangle[i]);
+  std::sort(keys.begin(), keys.end());
+  return double(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
 /// One frame per iteration in an arena of state.range(0) threads; resolve when `gbuffer`.
@@ -52,6 +66,7 @@ void run(benchmark::State& state, bool gbuffer) {
   const double cold_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (auto _ : state) frame();
   report(state, stats, cold_ms);
+  if (!gbuffer) state.counters["tri_visible"] = visible_triangles(renderer.render_visibility(w.scene, w.camera, opt));
 }
 
 void BM_RasterVisibility(benchmark::State& state) { run(state, false); }
