@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "render/vertex_lanes.hpp"
 
 namespace silva::render {
 
@@ -34,6 +35,20 @@ void check_mesh(const Mesh& mesh, uint32_t mesh_index) {
   }
 }
 
+/// For an item known to lie in front of a perspective camera: transforms and projects the range of
+/// vertices its triangles use on SIMD lanes at once, into the item's vertex cache slots (the same
+/// bits the per-vertex path gives). Skipped when the range is sparse or holds a bad index (the
+/// triangle loop then reports it).
+void project_item_vertices(const Mesh& mesh, const Eigen::Matrix<double, 3, 4>& m, const ViewProjection& view,
+                           uint32_t t_begin, uint32_t t_end, VertexCache& cache) {
+  const auto [lo, hi] = std::minmax_element(mesh.indices.begin() + ptrdiff_t(t_begin) * 3,
+                                            mesh.indices.begin() + ptrdiff_t(t_end) * 3);
+  if (t_begin == t_end || *hi >= mesh.positions.size()) return;
+  const uint32_t first = *lo, count = *hi - *lo + 1;
+  if (count > 4 * (t_end - t_begin)) return;  // sparse: most of the range unused
+  project_vertices(m, view, mesh.positions.data() + first, count, cache.fill(first, count));
+}
+
 /// Sets up and bins the triangles of one item into `store`.
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back, const TileGrid& grid,
                   GeometryStore& store) {
@@ -46,6 +61,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   in.inside_view = item.inside_view;
   TriBounds bounds[kMaxSetupTriangles];
   store.vertices.begin_item(vertex_count);
+  if (item.inside_view && sv.view.perspective) project_item_vertices(mesh, m, sv.view, t_begin, t_end, store.vertices);
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
@@ -57,7 +73,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
         if (v >= vertex_count)
           throw InputError("render scene: mesh " + std::to_string(inst.mesh) + " has index " + std::to_string(v) +
                            " but only " + std::to_string(vertex_count) + " vertices");
-        in.v[k] = &store.vertices.get(v, [&] { return Vec3d(m.leftCols<3>() * mesh.positions[v].cast<double>() + m.col(3)); });
+        in.v[k] = &store.vertices.get(v, [&] { return to_view(m, mesh.positions[v]); });
         if (in.mask) in.uv[k] = &mesh.uvs[v];
       }
       in.key = (uint64_t(item.instance) << 32) | t;

@@ -61,6 +61,14 @@ struct SharedPlanes {
 
 }  // namespace
 
+void project_vertex(const ViewProjection& view, SetupVertex& v) {
+  const Snapped sn = snap(view, v.p);
+  v.x = sn.x;
+  v.y = sn.y;
+  v.depth = view.depth_value(v.p);
+  v.projected = true;
+}
+
 SetupView::SetupView(const ViewProjection& v) : view(v) {
   frustum_count = view.frustum_planes(frustum);
   clip_count = view.clip_planes(clip);
@@ -103,13 +111,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
   } else {
     for (int i = 0; i < 3; ++i) {
       SetupVertex& v = *in.v[i];
-      if (!v.projected) {
-        const Snapped sn = snap(view, v.p);
-        v.x = sn.x;
-        v.y = sn.y;
-        v.depth = view.depth_value(v.p);
-        v.projected = true;
-      }
+      if (!v.projected) project_vertex(view, v);
       s[i] = Snapped{v.x, v.y};
       vertex_depth_max = std::max(vertex_depth_max, v.depth);
     }

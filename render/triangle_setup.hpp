@@ -19,6 +19,15 @@ struct SetupVertex {
   double depth = 0;        ///< Reverse depth value of p.
 };
 
+/// View-space position of a mesh vertex: m * (p, 1) in double.
+inline Vec3d to_view(const Eigen::Matrix<double, 3, 4>& m, const Vec3f& p) {
+  return Vec3d(m.leftCols<3>() * p.cast<double>() + m.col(3));
+}
+
+/// Sets v's snapped screen position and reverse depth from v.p (in front of the camera when the
+/// view is a perspective one) and marks it projected.
+void project_vertex(const ViewProjection& view, SetupVertex& v);
+
 /// Per-worker SetupVertex slots indexed by mesh vertex, valid for the current geometry item only.
 struct VertexCache {
   std::vector<SetupVertex> slots;  ///< One per mesh vertex.
@@ -34,6 +43,12 @@ struct VertexCache {
       std::fill(stamp.begin(), stamp.end(), 0u);
       item = 1;
     }
+  }
+  /// Slots of vertices [first, first + count) (inside the item's vertex count), marked as filled
+  /// for the current item: the caller fills them.
+  SetupVertex* fill(uint32_t first, uint32_t count) {
+    std::fill(stamp.begin() + first, stamp.begin() + first + count, item);
+    return slots.data() + first;
   }
   /// Slot of vertex `index` (< the item's vertex count); `position()` gives its view-space
   /// position on first use in this item.
