@@ -162,17 +162,21 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   return wrote;
 }
 
+/// Index of 8x8 block (bx, by) of the tile in TileScratch::block_min.
+size_t block_index(const TileJob& job, int bx, int by) {
+  return size_t(by) * size_t(job.stride / kDepthBlockSize) + size_t(bx);
+}
+
 /// Rasterises one bin entry into the 8x8 blocks of the tile it overlaps, skipping the blocks
 /// where it lies behind everything already drawn; its RasterTri is only read for the others.
 void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, TileScratch& s,
                   TileCounters& counters) {
-  const int block_stride = job.stride / kDepthBlockSize;
   const RasterTri* t = nullptr;
   const AlphaAttrib* alpha = nullptr;
   for (int by = e.y0 / kDepthBlockSize; by <= e.y1 / kDepthBlockSize; ++by) {
     const int y_begin = std::max(int(e.y0), by * kDepthBlockSize), y_end = std::min((by + 1) * kDepthBlockSize - 1, int(e.y1));
     for (int bx = e.x0 / kDepthBlockSize; bx <= e.x1 / kDepthBlockSize; ++bx) {
-      double& bmin = s.block_min[size_t(by) * size_t(block_stride) + size_t(bx)];
+      double& bmin = s.block_min[block_index(job, bx, by)];
       if (e.depth_max < bmin) continue;  // behind everything already in this block
       if (t == nullptr) {
         t = &src.tris[e.index];
@@ -188,8 +192,7 @@ void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, 
 /// False when the entry lies behind everything already drawn in its first block (a hint: blocks
 /// only get nearer, so it will most likely be rejected there and in its other blocks).
 bool might_draw(const BinEntry& e, const TileJob& job, const TileScratch& s) {
-  const int block_stride = job.stride / kDepthBlockSize;
-  return e.depth_max >= s.block_min[size_t(e.y0 / kDepthBlockSize) * size_t(block_stride) + size_t(e.x0 / kDepthBlockSize)];
+  return e.depth_max >= s.block_min[block_index(job, e.x0 / kDepthBlockSize, e.y0 / kDepthBlockSize)];
 }
 
 /// Clears the tile and rasterises every source triangle into it.
