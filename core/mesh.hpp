@@ -19,13 +19,10 @@ struct AlphaMask {
   std::vector<uint8_t> alpha;    ///< width*height alpha values, row-major.
   float cutoff = 0.5f;           ///< A texel is opaque when alpha/255 >= cutoff.
   /// Nearest-texel lookup with repeat wrap: true when (u, v) is opaque (|u|, |v| < 2^31).
-  bool opaque(float u, float v) const {
-    const size_t i = size_t(texel(v, height)) * size_t(width) + size_t(texel(u, width));
-    return float(alpha[i]) >= cutoff * 255.0f;
-  }
-
- private:
-  /// Texel index of coordinate t wrapped into [0, 1): floor without a libm call (hot in the raster loop).
+  bool opaque(float u, float v) const { return opaque_texel(texel(v, height) * width + texel(u, width)); }
+  /// True when texel i (row-major) is opaque.
+  bool opaque_texel(int i) const { return float(alpha[size_t(i)]) >= cutoff * 255.0f; }
+  /// Texel index of coordinate t wrapped into [0, 1) over n texels: floor without a libm call.
   static int texel(float t, int n) {
     float f = float(int(t));
     if (f > t) f -= 1.0f;

@@ -20,6 +20,7 @@ TileGrid TileGrid::make(int width, int height, int tile_size) {
   g.width = width;
   g.height = height;
   g.tile_size = tile_size;
+  g.tile_reciprocal = ((uint64_t(1) << 32) + uint64_t(tile_size) - 1) / uint64_t(tile_size);
   g.tiles_x = (width + tile_size - 1) / tile_size;
   g.tiles_y = (height + tile_size - 1) / tile_size;
   return g;
@@ -37,7 +38,7 @@ void GeometryStore::reset(int tile_count) {
 void GeometryStore::bin(uint32_t index, const TriBounds& b, const TileGrid& grid) {
   const RasterTri& t = tris[index];
   const int ts = grid.tile_size;
-  const int tx0 = b.x0 / ts, tx1 = b.x1 / ts, ty0 = b.y0 / ts, ty1 = b.y1 / ts;
+  const int tx0 = grid.tile_of(b.x0), tx1 = grid.tile_of(b.x1), ty0 = grid.tile_of(b.y0), ty1 = grid.tile_of(b.y1);
   const bool single = tx0 == tx1 && ty0 == ty1;
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {

@@ -15,8 +15,12 @@ struct TileGrid {
   int tile_size = 64; ///< Tile side in pixels.
   int tiles_x = 0;    ///< Tiles across.
   int tiles_y = 0;    ///< Tiles down.
-  /// Grid covering a width x height image with tile_size tiles.
+  uint64_t tile_reciprocal = 0;  ///< ceil(2^32 / tile_size): tile_of's multiplier.
+  /// Grid covering a width x height image with tile_size tiles (tile_size in 1..256).
   static TileGrid make(int width, int height, int tile_size);
+  /// Tile column (or row) of pixel column (or row) p in [0, 2^16): p / tile_size by a multiply
+  /// and a shift, exact in that range (the error term p * e / 2^32 < 2^-16 stays below 1/tile_size).
+  int tile_of(int p) const { return int((uint64_t(uint32_t(p)) * tile_reciprocal) >> 32); }
   /// Number of tiles.
   int count() const { return tiles_x * tiles_y; }
 };

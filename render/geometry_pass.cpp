@@ -50,8 +50,8 @@ void project_item_vertices(const Mesh& mesh, const Eigen::Matrix<double, 3, 4>& 
 }
 
 /// Sets up and bins the triangles of one item into `store`.
-void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back, const TileGrid& grid,
-                  GeometryStore& store) {
+void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
+                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store) {
   const Instance& inst = scene.instances[item.instance];
   const Mesh& mesh = *scene.meshes[inst.mesh].lods[item.lod];
   const Eigen::Matrix<double, 3, 4> m = object_to_view(inst, sv.view);
@@ -65,7 +65,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
-    in.mask = part.mask.get();
+    in.mask = part.mask ? masks.find(part.mask.get()) : nullptr;
     in.cull_back = cull_back && !part.double_sided;
     for (uint32_t t = p_begin; t < p_end; ++t) {
       for (int k = 0; k < 3; ++k) {
@@ -108,14 +108,14 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 }
 
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const TileGrid& grid, GeometryStoreSet& stores) {
+                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores) {
   for (uint32_t i = 0; i < scene.meshes.size(); ++i)
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
   for (GeometryStore& s : stores) s.reset(grid.count());
   tbb::parallel_for(size_t(0), items.size(), [&](size_t i) {
     GeometryStore& store = stores.local();
     if (store.bins.size() != size_t(grid.count())) store.reset(grid.count());
-    process_item(scene, view, items[i], cull_back, grid, store);
+    process_item(scene, view, items[i], cull_back, masks, grid, store);
   });
 }
 

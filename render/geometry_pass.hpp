@@ -6,6 +6,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include "render/alpha_bits.hpp"
 #include "render/bin.hpp"
 #include "render/instance_cull.hpp"
 #include "render/scene.hpp"
@@ -33,9 +34,10 @@ using GeometryStoreSet = tbb::enumerable_thread_specific<GeometryStore>;
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items);
 
 /// Transforms, culls, clips, sets up and bins every item's triangles in parallel into the
-/// calling threads' stores (each reset for `grid` first). Throws InputError for a mesh whose
-/// indices, normals or uvs do not match its positions.
+/// calling threads' stores (each reset for `grid` first); masked parts take their bits from
+/// `masks` (updated for this scene). Throws InputError for a mesh whose indices, normals or uvs
+/// do not match its positions.
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const TileGrid& grid, GeometryStoreSet& stores);
+                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores);
 
 }  // namespace silva::render

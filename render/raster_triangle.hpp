@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "core/mesh.hpp"
+#include "render/alpha_bits.hpp"
 #include "render/raster_conventions.hpp"
 #include "render/view_projection.hpp"
 
@@ -55,13 +56,13 @@ struct BinEntry {
 };
 static_assert(sizeof(BinEntry) == 16, "bins hold 4 entries per cache line");
 
-/// What alpha testing needs at a pixel: barycentric planes, vertex uvs and the mask. At pixel
-/// (x, y): b1 = n1.at/den.at, b2 = n2.at/den.at, uv = uv0 + b1 (uv1 - uv0) + b2 (uv2 - uv0) in
-/// double, then mask->opaque(float(u), float(v)) (nearest texel, repeat wrap).
+/// What alpha testing needs at a pixel: perspective-correct texture coordinates as ratios of
+/// planes, and the mask's opacity bits. At pixel (x, y): U = u.at(x, y), V = v.at(x, y) and
+/// W = w.at(x, y) in double, then s = float(U) / float(W), t = float(V) / float(W) in float, and
+/// the pixel is opaque when bits->opaque(s, t) (nearest texel, repeat wrap).
 struct AlphaAttrib {
-  PixelPlane n1, n2, den;       ///< b1 = n1/den, b2 = n2/den at pixel centres.
-  Vec2f uv0, uv1, uv2;          ///< Vertex texture coordinates.
-  const AlphaMask* mask = nullptr;  ///< Non-owning; the Scene outlives the pass.
+  PixelPlane u, v, w;               ///< U / W and V / W are the texture coordinates.
+  const AlphaBits* bits = nullptr;  ///< Non-owning; the renderer's AlphaBitsCache outlives the pass.
 };
 
 }  // namespace silva::render

@@ -37,6 +37,7 @@ struct PassState {
 struct Renderer::Impl {
   std::vector<BoundingSphere> spheres;         ///< Per mesh, this pass.
   std::vector<DrawItem> items;                 ///< Geometry tasks, this pass.
+  AlphaBitsCache masks;                        ///< Opacity bits of the scene's alpha masks.
   GeometryStoreSet stores;                     ///< Thread-local set-up triangles and bins.
   TileScratchSet tile_scratch;                 ///< Thread-local tile planes.
   std::vector<const GeometryStore*> store_list;  ///< Stores of this pass.
@@ -52,7 +53,8 @@ struct Renderer::Impl {
     const uint64_t submitted = build_draw_items(scene, state.instances, items);
     const TileGrid grid = TileGrid::make(view.width, view.height, options.tile_size);
     const SetupView setup(view);
-    run_geometry_pass(scene, setup, items, cull_back, grid, stores);
+    masks.update(scene);
+    run_geometry_pass(scene, setup, items, cull_back, masks, grid, stores);
     store_list.clear();
     for (const GeometryStore& s : stores) store_list.push_back(&s);
     state.vis.resize(view.width, view.height);

@@ -63,31 +63,29 @@ auto texel_lanes(DF df, VF t, int n) {
 }
 
 /// Lanes of `live` whose pixel centre (x = vx, y = py) is opaque in the triangle's alpha mask:
-/// barycentrics and uvs on double lanes in AlphaAttrib's documented operation order, texel
-/// indices on float lanes (the same operations as AlphaMask::opaque), the alpha byte per live lane.
+/// the U, V, W planes on double lanes, the texture coordinates as float quotients and the texel
+/// indices on float lanes (AlphaAttrib's documented operations), then one gather of the texels'
+/// opacity words. Lanes outside `live` read word 0 and are dropped.
 template <class D, class V, class M>
 M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
   const auto plane = [&](const PixelPlane& p) { return hn::Add(hn::Set(d, p.c + p.b * py), hn::Mul(hn::Set(d, p.a), vx)); };
-  const auto den = plane(a.den);
-  const auto b1 = hn::Div(plane(a.n1), den), b2 = hn::Div(plane(a.n2), den);
-  const auto coord = [&](float c0, float c1, float c2) {
-    return hn::Add(hn::Add(hn::Set(d, double(c0)), hn::Mul(b1, hn::Set(d, double(c1 - c0)))),
-                   hn::Mul(b2, hn::Set(d, double(c2 - c0))));
-  };
   const hn::Rebind<float, D> df;
   const hn::RebindToSigned<decltype(df)> di;
-  const AlphaMask& mask = *a.mask;
-  const auto u = hn::DemoteTo(df, coord(a.uv0.x(), a.uv1.x(), a.uv2.x()));
-  const auto v = hn::DemoteTo(df, coord(a.uv0.y(), a.uv1.y(), a.uv2.y()));
-  const auto index = hn::Add(hn::Mul(texel_lanes(df, v, mask.height), hn::Set(di, mask.width)), texel_lanes(df, u, mask.width));
-  alignas(64) int32_t idx[kDepthBlockSize];
-  hn::Store(index, di, idx);
-  uint8_t live_bits[8] = {}, opaque_bits[8] = {};
+  const hn::RebindToUnsigned<decltype(df)> du;
+  const AlphaBits& bits = *a.bits;
+  const auto w = hn::DemoteTo(df, plane(a.w));
+  const auto s = hn::Div(hn::DemoteTo(df, plane(a.u)), w);
+  const auto t = hn::Div(hn::DemoteTo(df, plane(a.v)), w);
+  const auto texel = hn::Add(hn::Mul(texel_lanes(df, t, bits.height), hn::Set(di, bits.width)), texel_lanes(df, s, bits.width));
+  uint8_t live_bits[8] = {};
   hn::StoreMaskBits(d, live, live_bits);
-  const float threshold = mask.cutoff * 255.0f;
-  for (size_t k = 0; k < hn::Lanes(d); ++k)
-    if (((live_bits[k / 8] >> (k % 8)) & 1) && float(mask.alpha[size_t(idx[k])]) >= threshold)
-      opaque_bits[k / 8] = uint8_t(opaque_bits[k / 8] | (1u << (k % 8)));
+  const auto live_f = hn::RebindMask(di, hn::LoadMaskBits(df, live_bits));
+  // Clamped into the mask so that no lane can read outside it, whatever its coordinates were.
+  const auto index = hn::IfThenElseZero(live_f, hn::Min(hn::Max(texel, hn::Zero(di)), hn::Set(di, bits.width * bits.height - 1)));
+  const auto words = hn::GatherIndex(du, bits.words.data(), hn::ShiftRight<5>(index));
+  const auto bit = hn::And(hn::Shr(words, hn::BitCast(du, hn::And(index, hn::Set(di, 31)))), hn::Set(du, 1u));
+  uint8_t opaque_bits[8] = {};
+  hn::StoreMaskBits(du, hn::And(hn::RebindMask(du, live_f), hn::Ne(bit, hn::Zero(du))), opaque_bits);
   return hn::LoadMaskBits(d, opaque_bits);
 }
 

@@ -51,6 +51,14 @@ bool covers(const EdgeFunction (&edge)[3], int x, int y) {
   return true;
 }
 
+/// Plane of the texture coordinate times den, t0 den + (t1 - t0) n1 + (t2 - t0) n2, from the
+/// barycentric planes (b1 = n1 / den, b2 = n2 / den) and the coordinate at the three vertices.
+PixelPlane texcoord_plane(const PixelPlane& n1, const PixelPlane& n2, const PixelPlane& den, float t0, float t1, float t2) {
+  const double k0 = t0, k1 = double(t1) - double(t0), k2 = double(t2) - double(t0);
+  const auto mix = [&](double d, double x1, double x2) { return (k0 * d + k1 * x1) + k2 * x2; };
+  return PixelPlane{mix(den.c, n1.c, n2.c), mix(den.a, n1.a, n2.a), mix(den.b, n1.b, n2.b)};
+}
+
 /// Lazily computed per-source-triangle data shared by its screen triangles.
 struct SharedPlanes {
   bool ready = false;       ///< Planes computed.
@@ -72,6 +80,7 @@ void project_vertex(const ViewProjection& view, SetupVertex& v) {
 SetupView::SetupView(const ViewProjection& v) : view(v) {
   frustum_count = view.frustum_planes(frustum);
   clip_count = view.clip_planes(clip);
+  scales = view.pixel_scales();
 }
 
 int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<RasterTri>& tris,
@@ -140,18 +149,19 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     if (x0 == x1 && y0 == y1 && !covers(edge, int(x0), int(y0))) continue;  // one candidate, missed
     if (!shared.ready) {
       shared.ready = true;
-      shared.depth = view.depth_plane(p0, n);
+      shared.depth = view.depth_plane(p0, n, sv.scales);
       const PixelPlane& d = shared.depth;
       const double span = std::abs(d.c) + std::abs(d.a) * double(view.width) + std::abs(d.b) * double(view.height);
       shared.depth_max = vertex_depth_max + std::abs(d.a) + std::abs(d.b) + 1e-9 * (span + std::abs(vertex_depth_max));
       if (in.mask) {
         shared.alpha = uint32_t(alphas.size());
         AlphaAttrib& at = alphas.emplace_back();
-        view.barycentric_planes(p0, p1, p2, at.n1, at.n2, at.den);
-        at.uv0 = *in.uv[0];
-        at.uv1 = *in.uv[1];
-        at.uv2 = *in.uv[2];
-        at.mask = in.mask;
+        PixelPlane n1, n2;
+        view.barycentric_planes(p0, p1, p2, sv.scales, n1, n2, at.w);
+        const Vec2f &uv0 = *in.uv[0], &uv1 = *in.uv[1], &uv2 = *in.uv[2];
+        at.u = texcoord_plane(n1, n2, at.w, uv0.x(), uv1.x(), uv2.x());
+        at.v = texcoord_plane(n1, n2, at.w, uv0.y(), uv1.y(), uv2.y());
+        at.bits = in.mask;
       }
     }
     tris.push_back(RasterTri{{edge[0], edge[1], edge[2]}, shared.depth, in.key, shared.alpha});

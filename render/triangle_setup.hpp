@@ -68,7 +68,7 @@ struct VertexCache {
 struct TriangleInput {
   SetupVertex* v[3] = {};           ///< View-space vertices in mesh order (shared between triangles).
   const Vec2f* uv[3] = {};          ///< Vertex uvs (only read when mask is set).
-  const AlphaMask* mask = nullptr;  ///< Alpha mask of the part, or null.
+  const AlphaBits* mask = nullptr;  ///< Opacity bits of the part's alpha mask, or null.
   bool cull_back = true;            ///< Drop the triangle when it faces away.
   bool inside_view = false;         ///< Known inside every frustum plane: skip the frustum and clip tests.
   uint64_t key = 0;                 ///< instance << 32 | triangle index.
@@ -88,6 +88,7 @@ struct SetupView {
   int frustum_count = 0; ///< Number of frustum planes.
   Vec4d clip[5];         ///< Clip planes (near, guard band).
   int clip_count = 0;    ///< Number of clip planes.
+  PixelScales scales;    ///< view.pixel_scales().
   /// Prepares the planes of a view.
   explicit SetupView(const ViewProjection& v);
 };

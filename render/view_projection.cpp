@@ -92,40 +92,43 @@ int ViewProjection::clip_planes(Vec4d out[5]) const {
   return n;
 }
 
-PixelPlane ViewProjection::depth_plane(const Vec3d& p0, const Vec3d& n) const {
+PixelScales ViewProjection::pixel_scales() const { return PixelScales{1.0 / fx, 1.0 / fy, cx / fx, cy / fy}; }
+
+PixelPlane ViewProjection::depth_plane(const Vec3d& p0, const Vec3d& n, const PixelScales& s) const {
   if (perspective) {
     // Ray r(u,v) = (r0 + u*ru + v*rv) hits the plane at t = (p0.n)/(r.n); z = t, d = (r.n)/(p0.n).
-    const double k = p0.dot(n);
-    const double c = (n.z() - n.x() * cx / fx - n.y() * cy / fy) / k;
-    return to_pixel_plane(c, n.x() / (fx * k), n.y() / (fy * k));
+    const double inv_k = 1.0 / p0.dot(n);
+    const double c = (n.z() - n.x() * s.cx_fx - n.y() * s.cy_fy) * inv_k;
+    return to_pixel_plane(c, n.x() * s.inv_fx * inv_k, n.y() * s.inv_fy * inv_k);
   }
   // Ray from O(u,v) = ((u-cx)/fx, (v-cy)/fy, 0) along +z: z = p0.z - ((O - p0)_xy . n_xy) / n.z.
   // d = -z = ((O - p0) . n) / n.z, with O.z = 0.
-  const double c = (-cx / fx * n.x() - cy / fy * n.y() - p0.dot(n)) / n.z();
-  return to_pixel_plane(c, n.x() / (fx * n.z()), n.y() / (fy * n.z()));
+  const double inv_nz = 1.0 / n.z();
+  const double c = (-s.cx_fx * n.x() - s.cy_fy * n.y() - p0.dot(n)) * inv_nz;
+  return to_pixel_plane(c, n.x() * s.inv_fx * inv_nz, n.y() * s.inv_fy * inv_nz);
 }
 
-void ViewProjection::barycentric_planes(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, PixelPlane& n1,
-                                        PixelPlane& n2, PixelPlane& den) const {
+void ViewProjection::barycentric_planes(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const PixelScales& s,
+                                        PixelPlane& n1, PixelPlane& n2, PixelPlane& den) const {
   // Moller-Trumbore with s = O - p0: b1 = s.(r x e2)/det, b2 = r.(s x e1)/det, det = e1.(r x e2).
   const Vec3d e1 = p1 - p0, e2 = p2 - p0;
   if (perspective) {
     // O = 0: every term is linear in r(u,v) = (r0 + u*ru + v*rv): value = r . q.
-    const Vec3d s = -p0;
-    const Vec3d q1 = e2.cross(s), q2 = s.cross(e1), qd = e2.cross(e1);
+    const Vec3d o = -p0;
+    const Vec3d q1 = e2.cross(o), q2 = o.cross(e1), qd = e2.cross(e1);
     const auto plane = [&](const Vec3d& q) {
-      return to_pixel_plane(q.z() - q.x() * cx / fx - q.y() * cy / fy, q.x() / fx, q.y() / fy);
+      return to_pixel_plane(q.z() - q.x() * s.cx_fx - q.y() * s.cy_fy, q.x() * s.inv_fx, q.y() * s.inv_fy);
     };
     n1 = plane(q1);
     n2 = plane(q2);
     den = plane(qd);
     return;
   }
-  // r = (0,0,1): every term is linear in s(u,v) = O(u,v) - p0: value = s . w.
+  // r = (0,0,1): every term is linear in o(u,v) = O(u,v) - p0: value = o . w.
   const Vec3d r(0, 0, 1);
   const Vec3d w1 = r.cross(e2), w2 = e1.cross(r);
   const auto plane = [&](const Vec3d& w) {
-    return to_pixel_plane(-cx / fx * w.x() - cy / fy * w.y() - p0.dot(w), w.x() / fx, w.y() / fy);
+    return to_pixel_plane(-s.cx_fx * w.x() - s.cy_fy * w.y() - p0.dot(w), w.x() * s.inv_fx, w.y() * s.inv_fy);
   };
   n1 = plane(w1);
   n2 = plane(w2);

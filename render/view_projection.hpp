@@ -19,6 +19,13 @@ struct PixelPlane {
   double at(double x, double y) const { return (c + b * y) + a * x; }
 };
 
+/// Reciprocals of a view's pixel mapping, computed once per pass so that setting up a triangle's
+/// planes divides at most once (by its own plane constant) instead of by fx and fy every time.
+struct PixelScales {
+  double inv_fx = 1, inv_fy = 1;  ///< 1 / fx, 1 / fy.
+  double cx_fx = 0, cy_fy = 0;    ///< cx / fx, cy / fy.
+};
+
 /// A view: world -> view transform plus a perspective or orthographic projection (see
 /// raster_conventions.hpp for axes and depth).
 struct ViewProjection {
@@ -49,10 +56,14 @@ struct ViewProjection {
   int frustum_planes(Vec4d out[6]) const;
   /// Planes a drawn triangle is clipped against (near plane, guard band); returns count.
   int clip_planes(Vec4d out[5]) const;
-  /// Plane of the reverse depth d over pixels for the triangle's plane (p0 on it, normal n).
-  PixelPlane depth_plane(const Vec3d& p0, const Vec3d& n) const;
-  /// Homogeneous barycentrics: b1 = n1/den, b2 = n2/den at each pixel centre (exact planes).
-  void barycentric_planes(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, PixelPlane& n1,
+  /// The reciprocals depth_plane and barycentric_planes multiply by.
+  PixelScales pixel_scales() const;
+  /// Plane of the reverse depth d over pixels for the triangle's plane (p0 on it, normal n);
+  /// `s` = pixel_scales().
+  PixelPlane depth_plane(const Vec3d& p0, const Vec3d& n, const PixelScales& s) const;
+  /// Homogeneous barycentrics: b1 = n1/den, b2 = n2/den at each pixel centre (planes scaled alike,
+  /// so the ratios are the barycentrics); `s` = pixel_scales().
+  void barycentric_planes(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const PixelScales& s, PixelPlane& n1,
                           PixelPlane& n2, PixelPlane& den) const;
   /// Projected diameter of a world sphere of radius r at distance `distance`, as a fraction of
   /// the image height (LOD selection).

@@ -84,6 +84,16 @@ TEST(RasterLabels, AlphaMaskCutsTheCardInTheVisibilityPass) {
   EXPECT_GT(holes, 500);
 }
 
+TEST(RasterLabels, MasksWiderThanOneOpacityWordAreReadTexelByTexel) {
+  // 37 x 5 texels: rows start inside 32-texel opacity words and texels cross word boundaries.
+  std::mt19937 gen(9);
+  std::vector<uint8_t> alpha;
+  for (int i = 0; i < 37 * 5; ++i) alpha.push_back(uint8_t(gen() % 256));
+  const auto [opaque, holes] = expect_card_follows_mask(make_mask(37, 5, alpha));
+  EXPECT_GT(opaque, 500);
+  EXPECT_GT(holes, 500);
+}
+
 TEST(RasterLabels, TinyMasksAreReadInsideTheirTexels) {
   // 1..5 texels across: every lane must read its own texel, the first and last included;
   // 127 and 128 sit on either side of the cutoff (127.5).
