@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "render/setup_lanes.hpp"
 #include "render/vertex_lanes.hpp"
 
 namespace silva::render {
@@ -37,16 +38,18 @@ void check_mesh(const Mesh& mesh, uint32_t mesh_index) {
 
 /// For an item known to lie in front of a perspective camera: transforms and projects the range of
 /// vertices its triangles use on SIMD lanes at once, into the item's vertex cache slots (the same
-/// bits the per-vertex path gives). Skipped when the range is sparse or holds a bad index (the
-/// triangle loop then reports it).
-void project_item_vertices(const Mesh& mesh, const Eigen::Matrix<double, 3, 4>& m, const ViewProjection& view,
+/// bits the per-vertex path gives), and returns true. Skipped (false) when the range is sparse or
+/// holds a bad index (the triangle loop then reports it).
+bool project_item_vertices(const Mesh& mesh, const Eigen::Matrix<double, 3, 4>& m, const ViewProjection& view,
                            uint32_t t_begin, uint32_t t_end, VertexCache& cache) {
+  if (t_begin == t_end) return false;
   const auto [lo, hi] = std::minmax_element(mesh.indices.begin() + ptrdiff_t(t_begin) * 3,
                                             mesh.indices.begin() + ptrdiff_t(t_end) * 3);
-  if (t_begin == t_end || *hi >= mesh.positions.size()) return;
+  if (*hi >= mesh.positions.size()) return false;
   const uint32_t first = *lo, count = *hi - *lo + 1;
-  if (count > 4 * (t_end - t_begin)) return;  // sparse: most of the range unused
+  if (count > 4 * (t_end - t_begin)) return false;  // sparse: most of the range unused
   project_vertices(m, view, mesh.positions.data() + first, count, cache.fill(first, count));
+  return true;
 }
 
 /// Sets up and bins the triangles of one item into `store`.
@@ -61,12 +64,20 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   in.inside_view = item.inside_view;
   TriBounds bounds[kMaxSetupTriangles];
   store.vertices.begin_item(vertex_count);
-  if (item.inside_view && sv.view.perspective) project_item_vertices(mesh, m, sv.view, t_begin, t_end, store.vertices);
+  // Every vertex projected and no triangle needing the frustum test or clipping: set up on SIMD lanes.
+  const bool lanes = item.inside_view && sv.view.perspective &&
+                     project_item_vertices(mesh, m, sv.view, t_begin, t_end, store.vertices);
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
     in.mask = part.mask ? masks.find(part.mask.get()) : nullptr;
     in.cull_back = cull_back && !part.double_sided;
+    if (lanes && p_begin < p_end) {
+      setup_triangles_lanes(sv, LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
+                                              mesh.uvs.data(), in.mask, in.cull_back, uint64_t(item.instance) << 32},
+                            grid, store);
+      continue;
+    }
     for (uint32_t t = p_begin; t < p_end; ++t) {
       for (int k = 0; k < 3; ++k) {
         const uint32_t v = mesh.indices[size_t(t) * 3 + size_t(k)];

@@ -94,7 +94,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     const Vec4d& pl = sv.frustum[k];
     if (plane_value(pl, p0) < 0.0 && plane_value(pl, p1) < 0.0 && plane_value(pl, p2) < 0.0) return 0;
   }
-  const Vec3d n = (p1 - p0).cross(p2 - p0);
+  const Vec3d n = cross3(p1 - p0, p2 - p0);
   const double facing = view.facing(p0, n);
   if (!(facing != 0.0) || !std::isfinite(facing)) return 0;  // edge-on, degenerate or NaN
   const bool front = facing < 0.0;

@@ -97,14 +97,14 @@ PixelScales ViewProjection::pixel_scales() const { return PixelScales{1.0 / fx, 
 PixelPlane ViewProjection::depth_plane(const Vec3d& p0, const Vec3d& n, const PixelScales& s) const {
   if (perspective) {
     // Ray r(u,v) = (r0 + u*ru + v*rv) hits the plane at t = (p0.n)/(r.n); z = t, d = (r.n)/(p0.n).
-    const double inv_k = 1.0 / p0.dot(n);
+    const double inv_k = 1.0 / dot3(p0, n);
     const double c = (n.z() - n.x() * s.cx_fx - n.y() * s.cy_fy) * inv_k;
     return to_pixel_plane(c, n.x() * s.inv_fx * inv_k, n.y() * s.inv_fy * inv_k);
   }
   // Ray from O(u,v) = ((u-cx)/fx, (v-cy)/fy, 0) along +z: z = p0.z - ((O - p0)_xy . n_xy) / n.z.
   // d = -z = ((O - p0) . n) / n.z, with O.z = 0.
   const double inv_nz = 1.0 / n.z();
-  const double c = (-s.cx_fx * n.x() - s.cy_fy * n.y() - p0.dot(n)) * inv_nz;
+  const double c = (-s.cx_fx * n.x() - s.cy_fy * n.y() - dot3(p0, n)) * inv_nz;
   return to_pixel_plane(c, n.x() * s.inv_fx * inv_nz, n.y() * s.inv_fy * inv_nz);
 }
 
@@ -115,7 +115,7 @@ void ViewProjection::barycentric_planes(const Vec3d& p0, const Vec3d& p1, const 
   if (perspective) {
     // O = 0: every term is linear in r(u,v) = (r0 + u*ru + v*rv): value = r . q.
     const Vec3d o = -p0;
-    const Vec3d q1 = e2.cross(o), q2 = o.cross(e1), qd = e2.cross(e1);
+    const Vec3d q1 = cross3(e2, o), q2 = cross3(o, e1), qd = cross3(e2, e1);
     const auto plane = [&](const Vec3d& q) {
       return to_pixel_plane(q.z() - q.x() * s.cx_fx - q.y() * s.cy_fy, q.x() * s.inv_fx, q.y() * s.inv_fy);
     };
@@ -126,13 +126,13 @@ void ViewProjection::barycentric_planes(const Vec3d& p0, const Vec3d& p1, const 
   }
   // r = (0,0,1): every term is linear in o(u,v) = O(u,v) - p0: value = o . w.
   const Vec3d r(0, 0, 1);
-  const Vec3d w1 = r.cross(e2), w2 = e1.cross(r);
+  const Vec3d w1 = cross3(r, e2), w2 = cross3(e1, r);
   const auto plane = [&](const Vec3d& w) {
-    return to_pixel_plane(-s.cx_fx * w.x() - s.cy_fy * w.y() - p0.dot(w), w.x() * s.inv_fx, w.y() * s.inv_fy);
+    return to_pixel_plane(-s.cx_fx * w.x() - s.cy_fy * w.y() - dot3(p0, w), w.x() * s.inv_fx, w.y() * s.inv_fy);
   };
   n1 = plane(w1);
   n2 = plane(w2);
-  den = PixelPlane{e1.dot(r.cross(e2)), 0.0, 0.0};
+  den = PixelPlane{dot3(e1, cross3(r, e2)), 0.0, 0.0};
 }
 
 double ViewProjection::screen_size(double radius, double distance) const {

@@ -10,6 +10,14 @@ namespace silva::render {
 using Vec2d = Eigen::Vector2d;  ///< 2D double vector.
 using Vec4d = Eigen::Vector4d;  ///< Plane (a, b, c, d): a*x + b*y + c*z + d >= 0 is inside.
 
+/// a x b with a fixed operation order, which the SIMD triangle setup repeats lane by lane.
+inline Vec3d cross3(const Vec3d& a, const Vec3d& b) {
+  return Vec3d(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(), a.x() * b.y() - a.y() * b.x());
+}
+
+/// a . b with a fixed operation order, (ax bx + ay by) + az bz (Eigen's dot may sum in another order).
+inline double dot3(const Vec3d& a, const Vec3d& b) { return (a.x() * b.x() + a.y() * b.y()) + a.z() * b.z(); }
+
 /// An affine function of pixel-index coordinates: value(x, y) = (c + b*y) + a*x.
 struct PixelPlane {
   double c = 0;  ///< Value at pixel (0, 0)'s centre.
@@ -51,7 +59,7 @@ struct ViewProjection {
   /// Depth value every pixel starts with; samples must beat it (1/far, or -inf).
   double depth_clear() const;
   /// Sign test of raster_conventions.hpp: negative for a front face seen from this view.
-  double facing(const Vec3d& p0, const Vec3d& n) const { return perspective ? p0.dot(n) : n.z(); }
+  double facing(const Vec3d& p0, const Vec3d& n) const { return perspective ? dot3(p0, n) : n.z(); }
   /// Planes of the visible volume (image sides, plus near and far for perspective); returns count.
   int frustum_planes(Vec4d out[6]) const;
   /// Planes a drawn triangle is clipped against (near plane, guard band); returns count.
