@@ -90,13 +90,12 @@ M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
 }
 
 /// Depth-tests and writes the covered lanes `in` of one row segment (pixels x.. of tile row y,
-/// image x coordinates vx); alpha-tests the lanes that would win first. Returns true on a write.
+/// image x coordinates vx); alpha-tests the lanes that would win first. Returns the writes made.
 template <class D, class V, class M>
-bool write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
-                   TileCounters& counters, int x, int y, V vx, M in) {
+size_t write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s, int x,
+                     int y, V vx, M in) {
   const hn::RebindToUnsigned<D> du;
   const size_t N = hn::Lanes(d);
-  counters.fragments += hn::CountTrue(d, in);
   const double py = double(job.y0 + y);
   const auto depth = hn::Add(hn::Set(d, t.depth.c + t.depth.b * py), hn::Mul(hn::Set(d, t.depth.a), vx));
   const size_t off = size_t(y) * size_t(job.stride) + size_t(x);
@@ -106,7 +105,7 @@ bool write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const Tile
   auto win = hn::And(in, hn::Gt(depth, stored));
   auto tie = hn::And(in, hn::Eq(depth, stored));
   if (alpha != nullptr) {
-    if (hn::AllFalse(d, hn::Or(win, tie))) return false;
+    if (hn::AllFalse(d, hn::Or(win, tie))) return 0;
     const auto opaque = opaque_lanes(d, *alpha, vx, py, hn::Or(win, tie));
     win = hn::And(win, opaque);
     tie = hn::And(tie, opaque);
@@ -114,18 +113,14 @@ bool write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const Tile
   if (hn::AllFalse(d, tie)) {
     hn::BlendedStore(depth, win, d, dp);
     hn::BlendedStore(hn::Set(du, t.key), hn::RebindMask(du, win), du, kp);
-    const size_t n = hn::CountTrue(d, win);
-    counters.writes += n;
-    return n > 0;
+    return hn::CountTrue(d, win);
   }
   alignas(64) double dv[kDepthBlockSize];
   uint8_t win_bits[8], tie_bits[8];
   hn::Store(depth, d, dv);
   hn::StoreMaskBits(d, win, win_bits);
   hn::StoreMaskBits(d, tie, tie_bits);
-  const uint64_t n = write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp);
-  counters.writes += n;
-  return n > 0;
+  return size_t(write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp));
 }
 
 /// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
@@ -143,7 +138,9 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   const auto eb0 = hn::Set(d, b0), eb1 = hn::Set(d, b1), eb2 = hn::Set(d, b2);
   const double py0 = double(iy0);
   const int block_x0 = x_first / kDepthBlockSize * kDepthBlockSize;
-  bool wrote = false;
+  // Counted in locals: counters may alias the key plane (both uint64_t), which would make every
+  // covered row load and store them through memory.
+  uint64_t fragments = 0, writes = 0;
   for (int x = block_x0 + (x_first - block_x0) / N * N; x <= x_last; x += N) {
     const auto vx = hn::Add(hn::Set(d, double(job.x0 + x)), hn::Iota(d, 0.0));
     auto e0 = hn::Add(hn::Set(d, t.edge[0].c + b0 * py0), hn::Mul(hn::Set(d, t.edge[0].a()), vx));
@@ -154,10 +151,13 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
     for (int y = y_begin; y <= y_end; ++y, e0 = hn::Add(e0, eb0), e1 = hn::Add(e1, eb1), e2 = hn::Add(e2, eb2)) {
       const auto in = hn::And(hn::And(lanes, hn::Ge(e0, zero)), hn::And(hn::Ge(e1, zero), hn::Ge(e2, zero)));
       if (hn::AllFalse(d, in)) continue;
-      wrote = write_segment(d, t, alpha, job, s, counters, x, y, vx, in) || wrote;
+      fragments += hn::CountTrue(d, in);
+      writes += write_segment(d, t, alpha, job, s, x, y, vx, in);
     }
   }
-  return wrote;
+  counters.fragments += fragments;
+  counters.writes += writes;
+  return writes > 0;
 }
 
 /// Index of 8x8 block (bx, by) of the tile in TileScratch::block_min.
