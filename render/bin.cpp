@@ -35,16 +35,15 @@ void GeometryStore::reset(int tile_count) {
   bin_entries = 0;
 }
 
-void GeometryStore::bin(uint32_t index, const TriBounds& b, const TileGrid& grid) {
+void GeometryStore::bin_across_tiles(uint32_t index, const TriBounds& b, const TileGrid& grid) {
   const RasterTri& t = tris[index];
   const int ts = grid.tile_size;
   const int tx0 = grid.tile_of(b.x0), tx1 = grid.tile_of(b.x1), ty0 = grid.tile_of(b.y0), ty1 = grid.tile_of(b.y1);
-  const bool single = tx0 == tx1 && ty0 == ty1;
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int x0 = std::max(b.x0, tx * ts), x1 = std::min(b.x1, tx * ts + ts - 1);
       const int y0 = std::max(b.y0, ty * ts), y1 = std::min(b.y1, ty * ts + ts - 1);
-      if (!single && !may_cover(t, x0, y0, x1, y1)) continue;
+      if (!may_cover(t, x0, y0, x1, y1)) continue;
       bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(BinEntry{
           b.depth_max, index, uint8_t(x0 - tx * ts), uint8_t(y0 - ty * ts), uint8_t(x1 - tx * ts), uint8_t(y1 - ty * ts)});
       ++bin_entries;

@@ -37,7 +37,19 @@ struct GeometryStore {
   /// Empties the store for a new pass over `tile_count` tiles (keeps capacity).
   void reset(int tile_count);
   /// Adds tris[index] (with its bounds) to the bins of every tile whose samples it may cover.
-  void bin(uint32_t index, const TriBounds& bounds, const TileGrid& grid);
+  void bin(uint32_t index, const TriBounds& bounds, const TileGrid& grid) {
+    const int tx = grid.tile_of(bounds.x0), ty = grid.tile_of(bounds.y0);
+    if (tx != grid.tile_of(bounds.x1) || ty != grid.tile_of(bounds.y1)) return bin_across_tiles(index, bounds, grid);
+    const int ox = tx * grid.tile_size, oy = ty * grid.tile_size;
+    bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(
+        BinEntry{bounds.depth_max, index, uint8_t(bounds.x0 - ox), uint8_t(bounds.y0 - oy), uint8_t(bounds.x1 - ox),
+                 uint8_t(bounds.y1 - oy)});
+    ++bin_entries;
+  }
+
+ private:
+  /// bin() for a triangle whose bounds span several tiles: each tile it may cover.
+  void bin_across_tiles(uint32_t index, const TriBounds& bounds, const TileGrid& grid);
 };
 
 }  // namespace silva::render
