@@ -216,6 +216,32 @@ void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t sou
   }
 }
 
+static_assert(uint32_t(kNoKey >> 32) == kNoInstance, "an empty key splits into kNoInstance");
+
+/// split_winners for one target (the scalar tail does the same per pixel).
+void SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+                      uint32_t* out_triangle) {
+  const hn::ScalableTag<uint64_t> du;
+  const hn::RebindToFloat<decltype(du)> dd;
+  const hn::Rebind<float, decltype(dd)> df;
+  const hn::Rebind<uint32_t, decltype(du)> d32;
+  const size_t N = hn::Lanes(du);
+  size_t i = 0;
+  for (; i + N <= n; i += N) {
+    const auto k = hn::LoadU(du, key + i);
+    const auto hit = hn::Ne(k, hn::Set(du, kNoKey));
+    hn::StoreU(hn::DemoteTo(df, hn::IfThenElseZero(hn::RebindMask(dd, hit), hn::LoadU(dd, depth + i))), df, out_depth + i);
+    hn::StoreU(hn::TruncateTo(d32, hn::ShiftRight<32>(k)), d32, out_instance + i);
+    hn::StoreU(hn::TruncateTo(d32, hn::IfThenElseZero(hit, k)), d32, out_triangle + i);
+  }
+  for (; i < n; ++i) {
+    const bool hit = key[i] != kNoKey;
+    out_depth[i] = hit ? float(depth[i]) : 0.0f;
+    out_instance[i] = uint32_t(key[i] >> 32);
+    out_triangle[i] = hit ? uint32_t(key[i]) : 0u;
+  }
+}
+
 /// The target this copy of the kernel was compiled for.
 int64_t ActiveTargetImpl() { return HWY_TARGET; }
 
@@ -226,11 +252,17 @@ HWY_AFTER_NAMESPACE();
 namespace silva::render {
 
 HWY_EXPORT(RasteriseTileImpl);
+HWY_EXPORT(SplitWinnersImpl);
 HWY_EXPORT(ActiveTargetImpl);
 
 void rasterise_tile(const TileJob& job, std::span<const TileSource> sources, TileScratch& scratch,
                     TileCounters& counters) {
   HWY_DYNAMIC_DISPATCH(RasteriseTileImpl)(job, sources.data(), sources.size(), scratch, counters);
+}
+
+void split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+                   uint32_t* out_triangle) {
+  HWY_DYNAMIC_DISPATCH(SplitWinnersImpl)(depth, key, n, out_depth, out_instance, out_triangle);
 }
 
 int64_t raster_simd_target() { return HWY_DYNAMIC_DISPATCH(ActiveTargetImpl)(); }

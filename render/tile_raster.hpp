@@ -44,6 +44,12 @@ struct TileCounters {
 void rasterise_tile(const TileJob& job, std::span<const TileSource> sources, TileScratch& scratch,
                     TileCounters& counters);
 
+/// Splits the winners of n pixels of a tile row into the visibility buffer's planes: reverse
+/// depth as float (0 where nothing won), instance = key >> 32 (kNoInstance where nothing won) and
+/// triangle = the key's low 32 bits (0 where nothing won). On SIMD lanes (dynamic dispatch).
+void split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+                   uint32_t* out_triangle);
+
 /// The Highway target rasterise_tile dispatches to now (HWY_AVX2, HWY_EMU128, ...).
 int64_t raster_simd_target();
 

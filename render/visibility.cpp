@@ -17,13 +17,8 @@ void write_tile(const TileJob& job, const TileScratch& s, VisibilityBuffer& out)
   for (int y = 0; y < job.h; ++y) {
     const size_t src = size_t(y) * size_t(job.stride);
     const size_t dst = size_t(job.y0 + y) * size_t(out.width) + size_t(job.x0);
-    for (int x = 0; x < job.w; ++x) {
-      const uint64_t key = s.key[src + size_t(x)];
-      const bool hit = key != kNoKey;
-      out.depth[dst + size_t(x)] = hit ? float(s.depth[src + size_t(x)]) : 0.0f;
-      out.instance[dst + size_t(x)] = hit ? uint32_t(key >> 32) : kNoInstance;
-      out.triangle[dst + size_t(x)] = hit ? uint32_t(key) : 0u;
-    }
+    split_winners(s.depth.data() + src, s.key.data() + src, size_t(job.w), out.depth.data() + dst,
+                  out.instance.data() + dst, out.triangle.data() + dst);
   }
 }
 

@@ -24,6 +24,43 @@ double ray_triangle(const Vec3d& o, const Vec3d& d, const Vec3d& a, const Vec3d&
   return margin >= 0.0 ? e2.dot(q) / det : -1.0;
 }
 
+TEST(RasterDepth, VisibilityBufferHoldsEachPixelsWinnerAndClearsEmptyPixels) {
+  // 37 x 23 pixels: rows end in a partial SIMD vector on every target. A quad 5 m ahead covers
+  // the middle-left of the view; the rest sees nothing.
+  Camera cam = Camera::from_fov(37, 23, 60.0, 0.05, 150.0);
+  cam.camera_to_world = pose_from_angles(Vec3d(2.0, 1.0, 1.5), 30.0, 5.0, 0.0);
+  const auto world = [&](double x, double y) { return Vec3f((cam.camera_to_world * Vec4d(x, y, 5.0, 1.0)).head<3>().cast<float>()); };
+  const Vec3f q[4] = {world(-1.5, -1.0), world(0.5, -1.0), world(0.5, 1.0), world(-1.5, 1.0)};
+  OwnedScene s;
+  s.add_instance(s.add_mesh(test::make_quad(q[0], q[1], q[2], q[3], Role::Obstacle, true)));
+  Renderer renderer;
+  const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{});
+  const Vec3d o = cam.position();
+  int hits = 0, empty = 0;
+  for (int v = 0; v < cam.height; ++v)
+    for (int u = 0; u < cam.width; ++u) {
+      const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
+      const Vec3d dir = cam.ray_direction(u, v);
+      double m0 = 0, m1 = 0;
+      const double t0 = ray_triangle(o, dir, q[0].cast<double>(), q[1].cast<double>(), q[2].cast<double>(), m0);
+      const double t1 = ray_triangle(o, dir, q[0].cast<double>(), q[2].cast<double>(), q[3].cast<double>(), m1);
+      if (std::abs(m0) < 1e-3 || std::abs(m1) < 1e-3) continue;  // on an edge: either answer is right
+      if (t0 < 0.0 && t1 < 0.0) {
+        EXPECT_EQ(vis.depth[i], 0.0f) << u << "," << v;
+        EXPECT_EQ(vis.instance[i], kNoInstance) << u << "," << v;
+        EXPECT_EQ(vis.triangle[i], 0u) << u << "," << v;
+        ++empty;
+        continue;
+      }
+      EXPECT_EQ(vis.instance[i], 0u) << u << "," << v;
+      EXPECT_EQ(vis.triangle[i], t0 >= 0.0 ? 0u : 1u) << u << "," << v;
+      EXPECT_NEAR(double(vis.depth[i]) * std::max(t0, t1), 1.0, 1e-5) << u << "," << v;  // d = 1/z
+      ++hits;
+    }
+  EXPECT_GT(hits, 80);
+  EXPECT_GT(empty, 300);
+}
+
 TEST(RasterDepth, DepthAtPixelCentresEqualsAnalyticRayPlaneZ) {
   Camera cam = Camera::from_fov(160, 120, 75.0, 0.05, 150.0);
   cam.camera_to_world = pose_from_angles(Vec3d(1.0, -2.0, 1.5), 20.0, -10.0, 5.0);
