@@ -21,6 +21,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 using DTag = hn::ScalableTag<double>;
 /// Most lanes of any target.
 constexpr size_t kMaxLanes = hn::MaxLanes(DTag());
+/// A pixel centre's offset inside its pixel, in sub-pixel units (128).
+constexpr double kHalfPixel = 0.5 * double(kSubpixelScale);
 
 /// Lane arrays of one group of triangles: inputs, then the set-up results.
 struct Lanes {
@@ -69,7 +71,7 @@ void store_pixel_plane(D d, V c, V a, V b, double (*out)[kMaxLanes]) {
 /// returns whether pixel (px, py) is inside it.
 template <class D, class V>
 auto edge_lanes(D d, V ax, V ay, V bx, V by, V px, V py, double (*out)[kMaxLanes]) {
-  const auto zero = hn::Zero(d), half = hn::Set(d, double(kSubpixelScale / 2)), scale = hn::Set(d, double(kSubpixelScale));
+  const auto zero = hn::Zero(d), half = hn::Set(d, kHalfPixel), scale = hn::Set(d, double(kSubpixelScale));
   const auto dx = hn::Sub(bx, ax), dy = hn::Sub(by, ay);
   const auto top_left = hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
   const auto c = hn::Sub(hn::Sub(hn::Mul(dx, hn::Sub(half, ay)), hn::Mul(dy, hn::Sub(half, ax))),
@@ -112,7 +114,7 @@ void setup_group(const SetupView& sv, bool cull_back, bool masked, size_t n, Lan
   const auto cx = hn::IfThenElse(front, s1x, s2x), cy = hn::IfThenElse(front, s1y, s2y);
 
   // Candidate pixels: floor((min - 128 + 255) / 256) .. floor((max - 128) / 256), clamped to the image.
-  const auto inv_scale = hn::Set(d, 1.0 / double(kSubpixelScale)), half = hn::Set(d, double(kSubpixelScale / 2));
+  const auto inv_scale = hn::Set(d, 1.0 / double(kSubpixelScale)), half = hn::Set(d, kHalfPixel);
   const auto first_px = [&](auto lo) { return hn::Max(zero, hn::Floor(hn::Mul(hn::Add(hn::Sub(lo, half), hn::Set(d, double(kSubpixelScale - 1))), inv_scale))); };
   const auto last_px = [&](auto hi, int size) { return hn::Min(hn::Set(d, double(size - 1)), hn::Floor(hn::Mul(hn::Sub(hi, half), inv_scale))); };
   const auto x0 = first_px(hn::Min(hn::Min(ax, bx), cx)), y0 = first_px(hn::Min(hn::Min(ay, by), cy));
