@@ -43,10 +43,7 @@ void GeometryStore::bin_across_tiles(uint32_t index, const TriBounds& b, const T
     for (int tx = tx0; tx <= tx1; ++tx) {
       const int x0 = std::max(b.x0, tx * ts), x1 = std::min(b.x1, tx * ts + ts - 1);
       const int y0 = std::max(b.y0, ty * ts), y1 = std::min(b.y1, ty * ts + ts - 1);
-      if (!may_cover(t, x0, y0, x1, y1)) continue;
-      bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(BinEntry{
-          b.depth_max, index, uint8_t(x0 - tx * ts), uint8_t(y0 - ty * ts), uint8_t(x1 - tx * ts), uint8_t(y1 - ty * ts)});
-      ++bin_entries;
+      if (may_cover(t, x0, y0, x1, y1)) add_entry(index, b.depth_max, tx, ty, x0, y0, x1, y1, grid);
     }
   }
 }

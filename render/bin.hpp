@@ -40,16 +40,20 @@ struct GeometryStore {
   void bin(uint32_t index, const TriBounds& bounds, const TileGrid& grid) {
     const int tx = grid.tile_of(bounds.x0), ty = grid.tile_of(bounds.y0);
     if (tx != grid.tile_of(bounds.x1) || ty != grid.tile_of(bounds.y1)) return bin_across_tiles(index, bounds, grid);
-    const int ox = tx * grid.tile_size, oy = ty * grid.tile_size;
-    bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(
-        BinEntry{bounds.depth_max, index, uint8_t(bounds.x0 - ox), uint8_t(bounds.y0 - oy), uint8_t(bounds.x1 - ox),
-                 uint8_t(bounds.y1 - oy)});
-    ++bin_entries;
+    add_entry(index, bounds.depth_max, tx, ty, bounds.x0, bounds.y0, bounds.x1, bounds.y1, grid);
   }
 
  private:
   /// bin() for a triangle whose bounds span several tiles: each tile it may cover.
   void bin_across_tiles(uint32_t index, const TriBounds& bounds, const TileGrid& grid);
+  /// Appends tris[index] to tile (tx, ty)'s bin with candidate pixels [x0, x1] x [y0, y1] (image
+  /// coordinates inside that tile).
+  void add_entry(uint32_t index, double depth_max, int tx, int ty, int x0, int y0, int x1, int y1, const TileGrid& grid) {
+    const int ox = tx * grid.tile_size, oy = ty * grid.tile_size;
+    bins[size_t(ty) * size_t(grid.tiles_x) + size_t(tx)].push_back(
+        BinEntry{depth_max, index, uint8_t(x0 - ox), uint8_t(y0 - oy), uint8_t(x1 - ox), uint8_t(y1 - oy)});
+    ++bin_entries;
+  }
 };
 
 }  // namespace silva::render
