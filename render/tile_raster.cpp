@@ -4,6 +4,7 @@
 #include "render/tile_raster.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "render/raster_conventions.hpp"
@@ -167,22 +168,28 @@ size_t block_index(const TileJob& job, int bx, int by) {
 
 /// Rasterises one bin entry into the 8x8 blocks of the tile it overlaps, skipping the blocks
 /// where it lies behind everything already drawn; its RasterTri is only read for the others.
+/// A block row's depth tests are made first, without branches, into a bit set of open blocks.
 void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, TileScratch& s,
                   TileCounters& counters) {
+  static_assert(256 / kDepthBlockSize <= 64, "a tile row's blocks fit one 64-bit set");
   const RasterTri* t = nullptr;
   const AlphaAttrib* alpha = nullptr;
+  const int bx0 = e.x0 / kDepthBlockSize, bx1 = e.x1 / kDepthBlockSize;
   for (int by = e.y0 / kDepthBlockSize; by <= e.y1 / kDepthBlockSize; ++by) {
+    double* bmin = &s.block_min[block_index(job, 0, by)];
+    uint64_t open = 0;  // blocks where the triangle may be in front of something drawn
+    for (int bx = bx0; bx <= bx1; ++bx) open |= uint64_t(e.depth_max >= bmin[bx]) << bx;
+    if (open == 0) continue;
+    if (t == nullptr) {
+      t = &src.tris[e.index];
+      alpha = t->alpha == kNoAlpha ? nullptr : &src.alphas[t->alpha];
+    }
     const int y_begin = std::max(int(e.y0), by * kDepthBlockSize), y_end = std::min((by + 1) * kDepthBlockSize - 1, int(e.y1));
-    for (int bx = e.x0 / kDepthBlockSize; bx <= e.x1 / kDepthBlockSize; ++bx) {
-      double& bmin = s.block_min[block_index(job, bx, by)];
-      if (e.depth_max < bmin) continue;  // behind everything already in this block
-      if (t == nullptr) {
-        t = &src.tris[e.index];
-        alpha = t->alpha == kNoAlpha ? nullptr : &src.alphas[t->alpha];
-      }
+    for (; open != 0; open &= open - 1) {
+      const int bx = std::countr_zero(open);
       const int x_first = std::max(int(e.x0), bx * kDepthBlockSize);
       const int x_last = std::min((bx + 1) * kDepthBlockSize - 1, int(e.x1));
-      if (raster_block(*t, alpha, job, s, counters, x_first, x_last, y_begin, y_end)) bmin = block_minimum(s, job, bx, by);
+      if (raster_block(*t, alpha, job, s, counters, x_first, x_last, y_begin, y_end)) bmin[bx] = block_minimum(s, job, bx, by);
     }
   }
 }
