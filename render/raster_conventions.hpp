@@ -42,7 +42,9 @@
 ///     binning order or thread count. Perspective views start at d = 1/far: z <= far is a hit.
 ///   - Early rejection: each 8x8 block keeps the minimum stored d; a triangle whose conservative
 ///     maximum d is below it is skipped for that block (never changes the result), and so is a
-///     block where one edge function is negative over the whole part the triangle's bounds cover.
+///     block where the triangle's depth plane, at the corner of the covered part its slopes point
+///     to, is below it (rounding is monotone, so no pixel there computes a larger d), or where one
+///     edge function is negative over the whole part the triangle's bounds cover.
 ///     Bin entries carry the maximum d and the bounds, so a triangle hidden in every block it
 ///     touches is skipped without reading its RasterTri. Instances are drawn nearest first (by
 ///     their bounding spheres) so more blocks are full early.

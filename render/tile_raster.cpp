@@ -128,10 +128,13 @@ size_t write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const Ti
 /// one 8x8 block, unless it lies outside one of its edges over that whole part. Edge values step
 /// down the rows by exact additions (integer-valued doubles). Returns true when it wrote a pixel.
 bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
-                  TileCounters& counters, int x_first, int x_last, int y_begin, int y_end) {
+                  TileCounters& counters, double block_min, int x_first, int x_last, int y_begin, int y_end) {
   const DTag d;
   const int N = int(hn::Lanes(d));
   const int ix0 = job.x0 + x_first, ix1 = job.x0 + x_last, iy0 = job.y0 + y_begin, iy1 = job.y0 + y_end;
+  // The plane's computed values are monotone in x and y (rounding is), so the corner its slopes
+  // point to holds the largest depth any of these pixels gets.
+  if (t.depth.at(t.depth.a >= 0 ? ix1 : ix0, t.depth.b >= 0 ? iy1 : iy0) < block_min) return false;
   for (const EdgeFunction& e : t.edge)
     if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;
   const auto zero = hn::Zero(d);
@@ -189,7 +192,8 @@ void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, 
       const int bx = std::countr_zero(open);
       const int x_first = std::max(int(e.x0), bx * kDepthBlockSize);
       const int x_last = std::min((bx + 1) * kDepthBlockSize - 1, int(e.x1));
-      if (raster_block(*t, alpha, job, s, counters, x_first, x_last, y_begin, y_end)) bmin[bx] = block_minimum(s, job, bx, by);
+      if (raster_block(*t, alpha, job, s, counters, bmin[bx], x_first, x_last, y_begin, y_end))
+        bmin[bx] = block_minimum(s, job, bx, by);
     }
   }
 }
