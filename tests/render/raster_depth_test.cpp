@@ -61,6 +61,42 @@ TEST(RasterDepth, VisibilityBufferHoldsEachPixelsWinnerAndClearsEmptyPixels) {
   EXPECT_GT(empty, 300);
 }
 
+TEST(RasterDepth, SteepTriangleDrawnAfterAWallWinsExactlyWhereItIsNearer) {
+  // One mesh, so every tile sees the wall (triangle 0) first and then a triangle slanting from
+  // 6 m to 14 m through it (triangle 1): the early depth tests of triangle 1 run against blocks
+  // the wall already filled, where its depth range straddles the wall's. A block test that used
+  // the triangle's far corner instead of its near one would drop its nearer pixels there.
+  Camera cam = Camera::from_fov(128, 96, 60.0, 0.05, 150.0);
+  cam.camera_to_world = pose_from_angles(Vec3d(0.0, 0.0, 1.5), 0.0, 0.0, 0.0);
+  Mesh m;
+  m.positions = {{10, -50, -50}, {10, 50, -50}, {10, 0, 60}, {6, -3, -1}, {6, -3, 4}, {14, 5, 1.5f}};
+  m.indices = {0, 1, 2, 3, 4, 5};
+  m.compute_normals();
+  test::one_part(m, Role::Obstacle, Material::Ground, true);
+  OwnedScene s;
+  s.add_instance(s.add_mesh(m));
+  Renderer renderer;
+  const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{});
+  const Vec3d o = cam.position();
+  const auto corner = [&](uint32_t k) { return m.positions[k].cast<double>(); };
+  int steep = 0, wall = 0;
+  for (int v = 0; v < cam.height; ++v)
+    for (int u = 0; u < cam.width; ++u) {
+      const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
+      const Vec3d dir = cam.ray_direction(u, v);
+      double mw = 0, ms = 0;
+      const double tw = ray_triangle(o, dir, corner(0), corner(1), corner(2), mw);
+      const double ts = ray_triangle(o, dir, corner(3), corner(4), corner(5), ms);
+      if (std::abs(ms) < 1e-3 || (ts >= 0.0 && std::abs(ts - tw) < 1e-4 * tw)) continue;  // edge or near-tie
+      ASSERT_GE(tw, 0.0) << "the wall fills the view";
+      const bool steep_wins = ts >= 0.0 && ts < tw;
+      EXPECT_EQ(vis.triangle[i], steep_wins ? 1u : 0u) << u << "," << v;
+      (steep_wins ? steep : wall) += 1;
+    }
+  EXPECT_GT(steep, 300);
+  EXPECT_GT(wall, 3000);
+}
+
 TEST(RasterDepth, DepthAtPixelCentresEqualsAnalyticRayPlaneZ) {
   Camera cam = Camera::from_fov(160, 120, 75.0, 0.05, 150.0);
   cam.camera_to_world = pose_from_angles(Vec3d(1.0, -2.0, 1.5), 20.0, -10.0, 5.0);
