@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "raster_test_scenes.hpp"
 #include "render/raster_conventions.hpp"
@@ -24,6 +25,21 @@ double ray_triangle(const Vec3d& o, const Vec3d& d, const Vec3d& a, const Vec3d&
   return margin >= 0.0 ? e2.dot(q) / det : -1.0;
 }
 
+/// Where pixel (u, v)'s centre ray from `cam` hits triangle abc: t (camera z; negative for a miss)
+/// and the smallest barycentric (near 0 on an edge).
+struct PixelHit {
+  double t = -1.0;       ///< Metric z of the hit, or negative.
+  double margin = 0.0;   ///< Smallest barycentric of the hit point.
+};
+
+/// PixelHit of triangle (a, b, c) (world positions) for pixel (u, v) of `cam`.
+PixelHit pixel_hit(const Camera& cam, int u, int v, const Vec3f& a, const Vec3f& b, const Vec3f& c) {
+  PixelHit h;
+  h.t = ray_triangle(cam.position(), cam.ray_direction(u, v), a.cast<double>(), b.cast<double>(), c.cast<double>(),
+                     h.margin);
+  return h;
+}
+
 TEST(RasterDepth, VisibilityBufferHoldsEachPixelsWinnerAndClearsEmptyPixels) {
   // 37 x 23 pixels: rows end in a partial SIMD vector on every target. A quad 5 m ahead covers
   // the middle-left of the view; the rest sees nothing.
@@ -35,16 +51,13 @@ TEST(RasterDepth, VisibilityBufferHoldsEachPixelsWinnerAndClearsEmptyPixels) {
   s.add_instance(s.add_mesh(test::make_quad(q[0], q[1], q[2], q[3], Role::Obstacle, true)));
   Renderer renderer;
   const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{});
-  const Vec3d o = cam.position();
   int hits = 0, empty = 0;
   for (int v = 0; v < cam.height; ++v)
     for (int u = 0; u < cam.width; ++u) {
       const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
-      const Vec3d dir = cam.ray_direction(u, v);
-      double m0 = 0, m1 = 0;
-      const double t0 = ray_triangle(o, dir, q[0].cast<double>(), q[1].cast<double>(), q[2].cast<double>(), m0);
-      const double t1 = ray_triangle(o, dir, q[0].cast<double>(), q[2].cast<double>(), q[3].cast<double>(), m1);
-      if (std::abs(m0) < 1e-3 || std::abs(m1) < 1e-3) continue;  // on an edge: either answer is right
+      const PixelHit h0 = pixel_hit(cam, u, v, q[0], q[1], q[2]), h1 = pixel_hit(cam, u, v, q[0], q[2], q[3]);
+      const double t0 = h0.t, t1 = h1.t;
+      if (std::abs(h0.margin) < 1e-3 || std::abs(h1.margin) < 1e-3) continue;  // on an edge: either answer is right
       if (t0 < 0.0 && t1 < 0.0) {
         EXPECT_EQ(vis.depth[i], 0.0f) << u << "," << v;
         EXPECT_EQ(vis.instance[i], kNoInstance) << u << "," << v;
@@ -77,17 +90,15 @@ TEST(RasterDepth, SteepTriangleDrawnAfterAWallWinsExactlyWhereItIsNearer) {
   s.add_instance(s.add_mesh(m));
   Renderer renderer;
   const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{});
-  const Vec3d o = cam.position();
-  const auto corner = [&](uint32_t k) { return m.positions[k].cast<double>(); };
+  const std::vector<Vec3f>& p = m.positions;
   int steep = 0, wall = 0;
   for (int v = 0; v < cam.height; ++v)
     for (int u = 0; u < cam.width; ++u) {
       const size_t i = size_t(v) * size_t(cam.width) + size_t(u);
-      const Vec3d dir = cam.ray_direction(u, v);
-      double mw = 0, ms = 0;
-      const double tw = ray_triangle(o, dir, corner(0), corner(1), corner(2), mw);
-      const double ts = ray_triangle(o, dir, corner(3), corner(4), corner(5), ms);
-      if (std::abs(ms) < 1e-3 || (ts >= 0.0 && std::abs(ts - tw) < 1e-4 * tw)) continue;  // edge or near-tie
+      const double tw = pixel_hit(cam, u, v, p[0], p[1], p[2]).t;
+      const PixelHit hs = pixel_hit(cam, u, v, p[3], p[4], p[5]);
+      const double ts = hs.t;
+      if (std::abs(hs.margin) < 1e-3 || (ts >= 0.0 && std::abs(ts - tw) < 1e-4 * tw)) continue;  // edge or near-tie
       ASSERT_GE(tw, 0.0) << "the wall fills the view";
       const bool steep_wins = ts >= 0.0 && ts < tw;
       EXPECT_EQ(vis.triangle[i], steep_wins ? 1u : 0u) << u << "," << v;
