@@ -48,7 +48,7 @@ void check(RTCDevice device, bool ok, const char* what) {
 }  // namespace
 
 struct EmbreePeer::Impl {
-  const ForestScene* world = nullptr;
+  PeerView view;
   RTCDevice device = nullptr;
   std::vector<RTCScene> mesh_scenes;                   // one BVH per mesh
   std::vector<std::vector<uint32_t>> part_first;       // per mesh, per part (= geomID): first triangle
@@ -91,7 +91,7 @@ struct EmbreePeer::Impl {
     const auto t0 = std::chrono::steady_clock::now();
     device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("embree peer: rtcNewDevice failed");
-    const render::Scene& scene = world->scene;
+    const render::Scene& scene = *view.scene;
     part_first.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) mesh_scenes.push_back(build_mesh(*scene.meshes[m].lods[0], part_first[m]));
     top = rtcNewScene(device);
@@ -111,7 +111,7 @@ struct EmbreePeer::Impl {
 
   /// Traces the rays of one kPacket x kPacket block whose upper-left pixel is (x0, y0).
   void trace_packet(int x0, int y0, RTCIntersectContext& ctx, PeerFrame& out) const {
-    const Camera& cam = world->camera;
+    const Camera& cam = *view.camera;
     const Mat3d r = cam.camera_to_world.block<3, 3>(0, 0);
     const Vec3d o = cam.position();
     RTCRayHit16 rh;
@@ -142,13 +142,13 @@ struct EmbreePeer::Impl {
       const unsigned inst = rh.hit.instID[0][k];
       out.depth[p] = rh.ray.tfar[k];
       out.instance[p] = inst;
-      out.triangle[p] = part_first[world->scene.instances[inst].mesh][rh.hit.geomID[k]] + rh.hit.primID[k];
+      out.triangle[p] = part_first[view.scene->instances[inst].mesh][rh.hit.geomID[k]] + rh.hit.primID[k];
     }
   }
 };
 
-EmbreePeer::EmbreePeer(const ForestScene& world) : impl_(std::make_unique<Impl>()) {
-  impl_->world = &world;
+EmbreePeer::EmbreePeer(const PeerView& view) : impl_(std::make_unique<Impl>()) {
+  impl_->view = view;
   impl_->build();
 }
 
@@ -159,7 +159,7 @@ EmbreePeer::~EmbreePeer() {
 }
 
 void EmbreePeer::render(PeerFrame& out) const {
-  const Camera& cam = impl_->world->camera;
+  const Camera& cam = *impl_->view.camera;
   if (out.width != cam.width || out.height != cam.height) out.resize(cam.width, cam.height);
   std::fill(out.instance.begin(), out.instance.end(), render::kNoInstance);
   std::fill(out.depth.begin(), out.depth.end(), 0.0f);

@@ -2,18 +2,17 @@
 /// @file Embree 3 visibility peer: one primary ray per pixel centre through a two-level BVH.
 #include <memory>
 
-#include "bench/forest_scene.hpp"
 #include "bench/peer_frame.hpp"
 
 namespace silva::bench {
 
-/// Traces the forest scene with Embree 3: one BVH per mesh (a geometry per part, an intersection
+/// Traces a view with Embree 3: one BVH per mesh (a geometry per part, an intersection
 /// filter for alpha-masked parts) under a top-level BVH of instances. Build and trace run on TBB
 /// in the caller's task_arena.
 class EmbreePeer {
  public:
   /// Builds the BVHs (the setup, timed into setup_ms()).
-  explicit EmbreePeer(const ForestScene& world);
+  explicit EmbreePeer(const PeerView& view);
   /// Releases the BVHs and the device.
   ~EmbreePeer();
   EmbreePeer(const EmbreePeer&) = delete;

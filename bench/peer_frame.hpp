@@ -3,10 +3,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/camera.hpp"
 #include "render/raster_conventions.hpp"
+#include "render/scene.hpp"
 #include "render/visibility.hpp"
 
 namespace silva::bench {
+
+/// What a visibility peer draws: a scene whose meshes it takes at lods[0] and a camera (both
+/// outlive the peer).
+struct PeerView {
+  const render::Scene* scene = nullptr;  ///< Instances and meshes (lods[0] only).
+  const Camera* camera = nullptr;        ///< Pose and intrinsics.
+};
 
 /// Per-pixel visibility of one view, row-major, row 0 at the top (image v = 0).
 struct PeerFrame {

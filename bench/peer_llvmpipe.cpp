@@ -108,7 +108,7 @@ Mat4d camera_to_clip(const Camera& c) {
 }  // namespace
 
 struct LlvmpipePeer::Impl {
-  const ForestScene* world = nullptr;
+  PeerView view;
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
   Program opaque, masked;
@@ -153,7 +153,7 @@ struct LlvmpipePeer::Impl {
       p.first_triangle = glGetUniformLocation(p.id, "first_triangle");
       p.cutoff = glGetUniformLocation(p.id, "cutoff");
     }
-    for (const render::MeshLods& lods : world->scene.meshes) {
+    for (const render::MeshLods& lods : view.scene->meshes) {
       const Mesh& mesh = *lods.lods[0];
       std::vector<float> vertices;
       vertices.reserve(mesh.positions.size() * 5);
@@ -180,7 +180,7 @@ struct LlvmpipePeer::Impl {
         if (part.mask && texture_index(part.mask.get()) < 0) upload_mask(*part.mask);
     }
     glBindVertexArray(0);
-    const Camera& cam = world->camera;
+    const Camera& cam = *view.camera;
     glGenRenderbuffers(1, &depth_rb);
     glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, cam.width, cam.height);
@@ -229,13 +229,13 @@ struct LlvmpipePeer::Impl {
 
   /// Draws every part of every instance, in instance order.
   void draw() {
-    const Camera& cam = world->camera;
+    const Camera& cam = *view.camera;
     const GLuint no_hit[4] = {render::kNoInstance, 0, 0, 0};
     const float far_depth = float(cam.near / cam.far);
     glClearBufferuiv(GL_COLOR, 0, no_hit);
     glClearBufferfv(GL_DEPTH, 0, &far_depth);
     const Mat4d view_to_clip = camera_to_clip(cam) * cam.world_to_camera();
-    const render::Scene& scene = world->scene;
+    const render::Scene& scene = *view.scene;
     for (size_t i = 0; i < scene.instances.size(); ++i) {
       const render::Instance& inst = scene.instances[i];
       const Mesh& mesh = *scene.meshes[inst.mesh].lods[0];
@@ -262,8 +262,8 @@ struct LlvmpipePeer::Impl {
   }
 };
 
-LlvmpipePeer::LlvmpipePeer(const ForestScene& world, int lp_threads) : impl_(std::make_unique<Impl>()) {
-  impl_->world = &world;
+LlvmpipePeer::LlvmpipePeer(const PeerView& view, int lp_threads) : impl_(std::make_unique<Impl>()) {
+  impl_->view = view;
   const auto t0 = std::chrono::steady_clock::now();
   impl_->create_context(lp_threads);
   impl_->upload();
@@ -294,7 +294,7 @@ void LlvmpipePeer::render(bool readback) {
   Impl& s = *impl_;
   s.draw();
   if (readback) {
-    const Camera& cam = s.world->camera;
+    const Camera& cam = *s.view.camera;
     glReadPixels(0, 0, cam.width, cam.height, GL_DEPTH_COMPONENT, GL_FLOAT, s.depth.data());
     glReadPixels(0, 0, cam.width, cam.height, GL_RG_INTEGER, GL_UNSIGNED_INT, s.ids.data());
   }
@@ -303,7 +303,7 @@ void LlvmpipePeer::render(bool readback) {
 
 PeerFrame LlvmpipePeer::frame() const {
   const Impl& s = *impl_;
-  const Camera& cam = s.world->camera;
+  const Camera& cam = *s.view.camera;
   PeerFrame f;
   f.resize(cam.width, cam.height);
   for (size_t i = 0; i < s.depth.size(); ++i) {

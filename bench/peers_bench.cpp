@@ -1,6 +1,10 @@
 // Peers benchmark: Silva's visibility pass against Mesa llvmpipe (OpenGL on the CPU) and Embree 3
-// (one primary ray per pixel) on the same triangles and camera: the forest of
-// bench/forest_scene.hpp at 1920x1080, render.lod = false, alpha-tested leaf cards honoured.
+// (one primary ray per pixel) on the same triangles and camera, alpha-tested leaf cards honoured,
+// for two views at 1920x1080 (benchmark argument `view`):
+//   view 0: the synthetic stress forest of bench/forest_scene.hpp (1.08 M triangles, render.lod = false);
+//   view 1: the product's default forest view of bench/default_view.hpp (default world, middle
+//           autopilot pose, LODs on: Silva selects them; the peers are given the instances Silva
+//           draws at the LODs it drew, so their culling and LOD work is done for them).
 // Every peer produces per-pixel depth + instance + triangle; after timing, its last frame is
 // compared with Silva's and the run fails (error in the report) when fewer than 99% of the pixels
 // have the same instance or fewer than 99% of the pixels both hit have depth within 0.1%.
@@ -9,12 +13,13 @@
 
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <tbb/task_arena.h>
 
-#include "bench/forest_scene.hpp"
-#include "bench/peer_frame.hpp"
+#include "bench/bench_views.hpp"
+#include "bench/default_view.hpp"
 #include "render/renderer.hpp"
 #ifdef SILVA_PEER_EMBREE
 #include "bench/peer_embree.hpp"
@@ -39,30 +44,49 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }
 
 /// Work counts and times every benchmark reports.
-void report(benchmark::State& state, double setup_ms, double cold_ms) {
-  const ForestScene& w = forest_scene();
-  state.counters["triangles"] = double(w.triangle_count());
-  state.counters["pixels"] = double(w.camera.width) * double(w.camera.height);
+void report(benchmark::State& state, const BenchView& v, double setup_ms, double cold_ms) {
+  state.counters["triangles"] = double(v.triangles);
+  state.counters["pixels"] = double(v.peers.camera->width) * double(v.peers.camera->height);
   state.counters["setup_ms"] = setup_ms;
   state.counters["cold_ms"] = cold_ms;
   state.counters["ms_per_frame"] = benchmark::Counter(1e-3, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 #if defined(SILVA_PEER_EMBREE) || defined(SILVA_PEER_LLVMPIPE)
-/// Silva's visibility of the scene (identical for any thread count), computed once.
-const PeerFrame& silva_reference() {
-  static const PeerFrame f = [] {
+/// Silva's visibility of the peers' scene of view 1 (drawn with render.lod = false), after checking
+/// that it is Silva's own LOD-on frame of the full scene with the instances renumbered.
+PeerFrame default_view_reference() {
+  const DefaultView& v = default_view();
+  render::Renderer r;
+  PeerFrame full = from_visibility(r.render_visibility(v.frame.scene, v.camera, render::RenderOptions{}));
+  render::RenderOptions frozen;
+  frozen.lod = false;
+  PeerFrame drawn = from_visibility(r.render_visibility(v.drawn, v.camera, frozen));
+  for (size_t i = 0; i < drawn.instance.size(); ++i) {
+    const uint32_t inst = drawn.instance[i];
+    const uint32_t renumbered = inst == render::kNoInstance ? inst : v.drawn_from[inst];
+    if (renumbered != full.instance[i] || drawn.triangle[i] != full.triangle[i] || drawn.depth[i] != full.depth[i])
+      throw std::runtime_error("default view: the frozen-LOD scene does not reproduce Silva's frame at pixel " +
+                               std::to_string(i));
+  }
+  return drawn;
+}
+
+/// Silva's visibility of a view's peer scene (identical for any thread count), computed once per view.
+const PeerFrame& silva_reference(int64_t view) {
+  static const PeerFrame forest = [] {
     render::Renderer r;
-    render::RenderOptions opt;
-    opt.lod = false;
-    return from_visibility(r.render_visibility(forest_scene().scene, forest_scene().camera, opt));
+    const BenchView v = bench_view(0);
+    return from_visibility(r.render_visibility(*v.silva_scene, *v.peers.camera, v.options()));
   }();
-  return f;
+  if (view == 0) return forest;
+  static const PeerFrame world = default_view_reference();
+  return world;
 }
 
 /// Compares a peer's frame with Silva's; reports the agreement and fails the run below the bar.
 void cross_check(benchmark::State& state, const PeerFrame& peer, const char* name) {
-  const Agreement a = compare(peer, silva_reference(), kDepthTolerance);
+  const Agreement a = compare(peer, silva_reference(state.range(0)), kDepthTolerance);
   state.counters["agree_instance"] = a.instance;
   state.counters["agree_triangle"] = a.triangle;
   state.counters["agree_depth"] = a.depth;
@@ -73,32 +97,37 @@ void cross_check(benchmark::State& state, const PeerFrame& peer, const char* nam
 }
 #endif
 
-/// Silva: visibility pass in a task_arena of state.range(0) threads (setup: none; cold = first frame).
+/// Silva: visibility pass in a task_arena of state.range(1) threads (setup: none; cold = first
+/// frame); also reports its own work counts.
 void BM_Silva(benchmark::State& state) {
-  const ForestScene& w = forest_scene();
-  tbb::task_arena arena(int(state.range(0)));
+  const BenchView v = bench_view(state.range(0));
+  tbb::task_arena arena(int(state.range(1)));
   render::Renderer renderer;
-  render::RenderOptions opt;
-  opt.lod = false;
-  const auto frame = [&] { arena.execute([&] { renderer.render_visibility(w.scene, w.camera, opt); }); };
+  const render::RenderOptions opt = v.options();
+  render::RenderStats stats;
+  const auto frame = [&] { arena.execute([&] { renderer.render_visibility(*v.silva_scene, *v.peers.camera, opt, &stats); }); };
   const auto t0 = std::chrono::steady_clock::now();
   frame();
   const double cold_ms = ms_since(t0);
   for (auto _ : state) frame();
-  report(state, 0.0, cold_ms);
+  report(state, v, 0.0, cold_ms);
+  state.counters["tri_submitted"] = double(stats.triangles_submitted);
+  state.counters["tri_after_cull"] = double(stats.triangles_after_cull);
+  state.counters["tri_rasterised"] = double(stats.triangles_rasterised);
 }
 
 /// llvmpipe: one frame = clear, draws, readback when `readback`, glFinish. 1 thread runs
 /// LP_NUM_THREADS=0 (everything on the calling thread), 2 threads LP_NUM_THREADS=2.
 void llvmpipe(benchmark::State& state, [[maybe_unused]] bool readback) {
 #ifdef SILVA_PEER_LLVMPIPE
-  const int lp_threads = state.range(0) == 1 ? 0 : int(state.range(0));
-  LlvmpipePeer peer(forest_scene(), lp_threads);
+  const BenchView v = bench_view(state.range(0));
+  const int lp_threads = state.range(1) == 1 ? 0 : int(state.range(1));
+  LlvmpipePeer peer(v.peers, lp_threads);
   const auto t0 = std::chrono::steady_clock::now();
   peer.render(readback);
   const double cold_ms = ms_since(t0);
   for (auto _ : state) peer.render(readback);
-  report(state, peer.setup_ms(), cold_ms);
+  report(state, v, peer.setup_ms(), cold_ms);
   state.counters["lp_num_threads"] = lp_threads;
   if (!readback) peer.render(true);
   cross_check(state, peer.frame(), "llvmpipe");
@@ -114,19 +143,20 @@ void BM_Llvmpipe(benchmark::State& state) { llvmpipe(state, true); }
 void BM_LlvmpipeNoReadback(benchmark::State& state) { llvmpipe(state, false); }
 
 /// Embree: BVH build (setup) and rtcIntersect16 over 4x4 pixel packets, both in a task_arena of
-/// state.range(0) threads.
+/// state.range(1) threads.
 void BM_Embree(benchmark::State& state) {
 #ifdef SILVA_PEER_EMBREE
-  tbb::task_arena arena(int(state.range(0)));
+  const BenchView v = bench_view(state.range(0));
+  tbb::task_arena arena(int(state.range(1)));
   std::unique_ptr<EmbreePeer> peer;
-  arena.execute([&] { peer = std::make_unique<EmbreePeer>(forest_scene()); });
+  arena.execute([&] { peer = std::make_unique<EmbreePeer>(v.peers); });
   PeerFrame out;
   const auto frame = [&] { arena.execute([&] { peer->render(out); }); };
   const auto t0 = std::chrono::steady_clock::now();
   frame();
   const double cold_ms = ms_since(t0);
   for (auto _ : state) frame();
-  report(state, peer->setup_ms(), cold_ms);
+  report(state, v, peer->setup_ms(), cold_ms);
   cross_check(state, out, "Embree");
 #else
   state.SkipWithError("built without the Embree peer: Embree 3 not found (Debian: libembree-dev)");
@@ -137,7 +167,7 @@ void BM_Embree(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_Silva)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_Llvmpipe)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_LlvmpipeNoReadback)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_Embree)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_Silva)->Apply(bench::views_and_threads);
+BENCHMARK(BM_Llvmpipe)->Apply(bench::views_and_threads);
+BENCHMARK(BM_LlvmpipeNoReadback)->Apply(bench::views_and_threads);
+BENCHMARK(BM_Embree)->Apply(bench::views_and_threads);

@@ -1,6 +1,8 @@
-// Rasteriser benchmark: visibility pass and visibility + resolve at 1920x1080 on the synthetic
-// forest of bench/forest_scene.hpp (128 m x 128 m terrain at 0.5 m, 300 instanced trees of ~2-4k
-// triangles with alpha-tested leaf cards), 1 and 2 threads. Fixed seed; work counts beside times.
+// Rasteriser benchmark: visibility pass and visibility + resolve at 1920x1080, 1 and 2 threads, on
+// the views of bench/bench_views.hpp (argument `view`): 0 = the synthetic stress forest of
+// bench/forest_scene.hpp (128 m x 128 m terrain at 0.5 m, 300 instanced trees of ~2-4k triangles
+// with alpha-tested leaf cards, LODs off), 1 = the default world's middle autopilot view (LODs on).
+// Fixed seeds; work counts beside times.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -9,7 +11,7 @@
 
 #include <tbb/task_arena.h>
 
-#include "bench/forest_scene.hpp"
+#include "bench/bench_views.hpp"
 #include "render/raster_conventions.hpp"
 #include "render/renderer.hpp"
 
@@ -19,8 +21,7 @@ using namespace silva;
 using namespace silva::render;
 
 /// Adds the work counters of a frame and the rates derived from them.
-void report(benchmark::State& state, const RenderStats& s, double cold_ms) {
-  const double pixels = 1920.0 * 1080.0;
+void report(benchmark::State& state, const RenderStats& s, double pixels, double cold_ms) {
   state.counters["tri_submitted"] = double(s.triangles_submitted);
   state.counters["tri_after_cull"] = double(s.triangles_after_cull);
   state.counters["tri_rasterised"] = double(s.triangles_rasterised);
@@ -43,21 +44,23 @@ double visible_triangles(const VisibilityBuffer& vis) {
   return double(std::unique(keys.begin(), keys.end()) - keys.begin());
 }
 
-/// One frame per iteration in an arena of state.range(0) threads; resolve when `gbuffer`.
+/// One frame of view state.range(0) per iteration in an arena of state.range(1) threads; resolve
+/// when `gbuffer`.
 void run(benchmark::State& state, bool gbuffer) {
-  const bench::ForestScene& w = bench::forest_scene();
-  tbb::task_arena arena(int(state.range(0)));
+  const bench::BenchView v = bench::bench_view(state.range(0));
+  const Scene& scene = *v.silva_scene;
+  const Camera& camera = *v.peers.camera;
+  tbb::task_arena arena(int(state.range(1)));
   Renderer renderer;
   GBuffer g;
   RenderStats stats;
-  RenderOptions opt;
-  opt.lod = false;
+  const RenderOptions opt = v.options();
   const auto frame = [&] {
     arena.execute([&] {
       if (gbuffer) {
-        renderer.render_gbuffer(w.scene, w.camera, opt, g, &stats);
+        renderer.render_gbuffer(scene, camera, opt, g, &stats);
       } else {
-        renderer.render_visibility(w.scene, w.camera, opt, &stats);
+        renderer.render_visibility(scene, camera, opt, &stats);
       }
     });
   };
@@ -65,8 +68,8 @@ void run(benchmark::State& state, bool gbuffer) {
   frame();  // cold: first frame grows every buffer
   const double cold_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   for (auto _ : state) frame();
-  report(state, stats, cold_ms);
-  if (!gbuffer) state.counters["tri_visible"] = visible_triangles(renderer.render_visibility(w.scene, w.camera, opt));
+  report(state, stats, double(camera.width) * double(camera.height), cold_ms);
+  if (!gbuffer) state.counters["tri_visible"] = visible_triangles(renderer.render_visibility(scene, camera, opt));
 }
 
 void BM_RasterVisibility(benchmark::State& state) { run(state, false); }
@@ -74,5 +77,5 @@ void BM_RasterVisibilityResolve(benchmark::State& state) { run(state, true); }
 
 }  // namespace
 
-BENCHMARK(BM_RasterVisibility)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_RasterVisibilityResolve)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_RasterVisibility)->Apply(bench::views_and_threads);
+BENCHMARK(BM_RasterVisibilityResolve)->Apply(bench::views_and_threads);

@@ -1,0 +1,28 @@
+/// @file The numbered bench views (see bench_views.hpp).
+#include "bench/bench_views.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "bench/default_view.hpp"
+#include "bench/forest_scene.hpp"
+
+namespace silva::bench {
+
+BenchView bench_view(int64_t id) {
+  if (id == 0) {
+    const ForestScene& w = forest_scene();
+    return {&w.scene, false, {&w.scene, &w.camera}, w.triangle_count()};
+  }
+  if (id == 1) {
+    const DefaultView& v = default_view();
+    return {&v.frame.scene, true, {&v.drawn, &v.camera}, v.triangle_count()};
+  }
+  throw std::out_of_range("bench view " + std::to_string(id) + " does not exist (0: stress forest, 1: default view)");
+}
+
+void views_and_threads(benchmark::internal::Benchmark* b) {
+  b->ArgsProduct({{0, 1}, {1, 2}})->ArgNames({"view", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+}
+
+}  // namespace silva::bench
