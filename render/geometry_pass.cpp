@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "render/item_placement.hpp"
 #include "render/setup_lanes.hpp"
 #include "render/vertex_lanes.hpp"
 
@@ -36,62 +37,105 @@ void check_mesh(const Mesh& mesh, uint32_t mesh_index) {
   }
 }
 
-/// For an item known to lie in front of a perspective camera: transforms and projects the range of
-/// vertices its triangles use on SIMD lanes at once, into the item's vertex cache slots (the same
-/// bits the per-vertex path gives), and returns true. Skipped (false) when the range is sparse or
-/// holds a bad index (the triangle loop then reports it).
-bool project_item_vertices(const Mesh& mesh, const Eigen::Matrix<double, 3, 4>& m, const ViewProjection& view,
-                           uint32_t t_begin, uint32_t t_end, VertexCache& cache) {
-  if (t_begin == t_end) return false;
+/// Triangles placed at once within an item of an instance that straddles the view.
+constexpr uint32_t kPlacementRun = 128;
+
+/// The vertices an item's triangles use: indices [first, first + count).
+struct VertexRange {
+  uint32_t first = 0;  ///< Smallest index.
+  uint32_t count = 0;  ///< Largest - smallest + 1; 0 when not worth a whole-range pass.
+};
+
+/// The index range of triangles [t_begin, t_end), or count 0 when the range is empty, holds an
+/// index past the vertices (the triangle loop then reports it) or is sparse (mostly unused).
+VertexRange item_vertex_range(const Mesh& mesh, uint32_t t_begin, uint32_t t_end) {
+  if (t_begin == t_end) return {};
   const auto [lo, hi] = std::minmax_element(mesh.indices.begin() + ptrdiff_t(t_begin) * 3,
                                             mesh.indices.begin() + ptrdiff_t(t_end) * 3);
-  if (*hi >= mesh.positions.size()) return false;
-  const uint32_t first = *lo, count = *hi - *lo + 1;
-  if (count > 4 * (t_end - t_begin)) return false;  // sparse: most of the range unused
-  project_vertices(m, view, mesh.positions.data() + first, count, cache.fill(first, count));
-  return true;
+  if (*hi >= mesh.positions.size()) return {};
+  const uint32_t count = *hi - *lo + 1;
+  if (count > 4 * (t_end - t_begin)) return {};
+  return {*lo, count};
 }
 
-/// Sets up and bins the triangles of one item into `store`.
-void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
-                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store) {
-  const Instance& inst = scene.instances[item.instance];
-  const Mesh& mesh = *scene.meshes[inst.mesh].lods[item.lod];
-  const Eigen::Matrix<double, 3, 4> m = object_to_view(inst, sv.view);
-  const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
+/// What the triangle runs of one item share.
+struct ItemContext {
+  const Scene& scene;                     ///< The scene.
+  const SetupView& sv;                    ///< The view.
+  const DrawItem& item;                   ///< The item.
+  const Mesh& mesh;                       ///< Its LOD's mesh.
+  Eigen::Matrix<double, 3, 4> m;          ///< Object -> view.
+  bool cull_back;                         ///< Back-face culling on for single-sided parts.
+  const AlphaBitsCache& masks;            ///< Opacity bits of the masks.
+  const TileGrid& grid;                   ///< Tiles to bin into.
+  GeometryStore& store;                   ///< Output.
+};
+
+/// Sets up and bins triangles [t_begin, t_end) of the item, whose vertices `range` covers;
+/// `inside`: none of them needs a frustum test or clipping.
+void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexRange range, bool inside) {
+  const Mesh& mesh = c.mesh;
+  GeometryStore& store = c.store;
   const size_t vertex_count = mesh.positions.size();
+  // Every vertex projected and no triangle needing the frustum test or clipping: set up on SIMD
+  // lanes, the used vertices transformed and projected at once (the same bits as one by one).
+  const bool lanes = inside && c.sv.view.perspective && range.count > 0;
+  if (lanes)
+    project_vertices(c.m, c.sv.view, mesh.positions.data() + range.first, range.count,
+                     store.vertices.fill(range.first, range.count));
   TriangleInput in;
-  in.inside_view = item.inside_view;
+  in.inside_view = inside;
   TriBounds bounds[kMaxSetupTriangles];
-  store.vertices.begin_item(vertex_count);
-  // Every vertex projected and no triangle needing the frustum test or clipping: set up on SIMD lanes.
-  const bool lanes = item.inside_view && sv.view.perspective &&
-                     project_item_vertices(mesh, m, sv.view, t_begin, t_end, store.vertices);
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
     const uint32_t p_end = std::min(t_end, (part.first_index + part.index_count) / 3);
-    in.mask = part.mask ? masks.find(part.mask.get()) : nullptr;
-    in.cull_back = cull_back && !part.double_sided;
+    in.mask = part.mask ? c.masks.find(part.mask.get()) : nullptr;
+    in.cull_back = c.cull_back && !part.double_sided;
     if (lanes && p_begin < p_end) {
-      setup_triangles_lanes(sv, LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
-                                              mesh.uvs.data(), in.mask, in.cull_back, uint64_t(item.instance) << 32},
-                            grid, store);
+      setup_triangles_lanes(c.sv, LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
+                                                mesh.uvs.data(), in.mask, in.cull_back, uint64_t(c.item.instance) << 32},
+                            c.grid, store);
       continue;
     }
     for (uint32_t t = p_begin; t < p_end; ++t) {
       for (int k = 0; k < 3; ++k) {
         const uint32_t v = mesh.indices[size_t(t) * 3 + size_t(k)];
         if (v >= vertex_count)
-          throw InputError("render scene: mesh " + std::to_string(inst.mesh) + " has index " + std::to_string(v) +
-                           " but only " + std::to_string(vertex_count) + " vertices");
-        in.v[k] = &store.vertices.get(v, [&] { return to_view(m, mesh.positions[v]); });
+          throw InputError("render scene: mesh " + std::to_string(c.scene.instances[c.item.instance].mesh) +
+                           " has index " + std::to_string(v) + " but only " + std::to_string(vertex_count) +
+                           " vertices");
+        in.v[k] = &store.vertices.get(v, [&] { return to_view(c.m, mesh.positions[v]); });
         if (in.mask) in.uv[k] = &mesh.uvs[v];
       }
-      in.key = (uint64_t(item.instance) << 32) | t;
+      in.key = (uint64_t(c.item.instance) << 32) | t;
       const size_t first = store.tris.size();
-      const int emitted = setup_triangle(sv, in, store.tris, store.alphas, bounds, store.counters);
-      for (int k = 0; k < emitted; ++k) store.bin(uint32_t(first + size_t(k)), bounds[k], grid);
+      const int emitted = setup_triangle(c.sv, in, store.tris, store.alphas, bounds, store.counters);
+      for (int k = 0; k < emitted; ++k) store.bin(uint32_t(first + size_t(k)), bounds[k], c.grid);
     }
+  }
+}
+
+/// Sets up and bins the triangles of one item into `store`. An item of an instance that straddles
+/// the view is placed run by run (kPlacementRun triangles): runs wholly outside are dropped (each
+/// of their triangles would fail the same frustum plane), runs wholly inside go to the SIMD setup.
+void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
+                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store) {
+  const Instance& inst = scene.instances[item.instance];
+  const ItemContext c{scene, sv, item, *scene.meshes[inst.mesh].lods[item.lod], object_to_view(inst, sv.view),
+                      cull_back, masks, grid, store};
+  const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
+  store.vertices.begin_item(c.mesh.positions.size());
+  if (item.inside_view) {
+    process_run(c, t_begin, t_end, item_vertex_range(c.mesh, t_begin, t_end), true);
+    return;
+  }
+  for (uint32_t r = t_begin; r < t_end; r += kPlacementRun) {
+    const uint32_t r_end = std::min(t_end, r + kPlacementRun);
+    const VertexRange range = item_vertex_range(c.mesh, r, r_end);
+    const Placement place = range.count > 0
+                                ? place_points({c.mesh.positions.data() + range.first, range.count}, c.m, sv)
+                                : Placement::Straddles;
+    if (place != Placement::Outside) process_run(c, r, r_end, range, place == Placement::Inside);
   }
 }
 

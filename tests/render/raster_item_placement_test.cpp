@@ -1,0 +1,116 @@
+// Placement of triangle runs of instances that straddle the view: known answers for
+// place_points, and a straddling terrain whose runs are placed (dropped / SIMD setup) rendering
+// exactly like the same triangles in an order that leaves every run to the per-triangle tests.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "raster_test_scenes.hpp"
+#include "render/item_placement.hpp"
+#include "render/renderer.hpp"
+
+namespace silva::render {
+namespace {
+
+/// A 90-degree 64x48 view looking down +z from the origin (view space = object space), near 0.1, far 100.
+SetupView axis_view() {
+  Camera cam = Camera::from_fov(64, 48, 90.0, 0.1, 100.0);
+  cam.camera_to_world = Mat4d::Identity();
+  return SetupView(ViewProjection::from_camera(cam));
+}
+
+/// The identity object -> view transform.
+Eigen::Matrix<double, 3, 4> identity() { return Eigen::Matrix<double, 3, 4>::Identity(); }
+
+TEST(ItemPlacement, PointsInFrontInsideTheImageAreInside) {
+  const std::vector<Vec3f> pts = {{-1, -1, 5}, {1, 0.5f, 6}, {0, 0, 5.5f}};
+  EXPECT_EQ(place_points(pts, identity(), axis_view()), Placement::Inside);
+}
+
+TEST(ItemPlacement, PointsBehindTheNearPlaneBeyondTheFarPlaneOrBesideTheImageAreOutside) {
+  const SetupView sv = axis_view();
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, -3}, {1, 1, 0.05f}}, identity(), sv), Placement::Outside);
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, 101}, {1, 1, 150}}, identity(), sv), Placement::Outside);
+  // x > z everywhere: right of the 90-degree image (u = fx * x / z + cx > width).
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{7, 0, 5}, {9, 1, 6}}, identity(), sv), Placement::Outside);
+}
+
+TEST(ItemPlacement, PointsAcrossAPlaneOrNotFiniteStraddle) {
+  const SetupView sv = axis_view();
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, 5}, {8, 0, 5}}, identity(), sv), Placement::Straddles);  // side
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, -1}, {0, 0, 5}}, identity(), sv), Placement::Straddles);  // near
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, 5}, {nan, 0, 5}}, identity(), sv), Placement::Straddles);
+  EXPECT_EQ(place_points(std::vector<Vec3f>{}, identity(), sv), Placement::Straddles);
+}
+
+TEST(ItemPlacement, APointOnAPlaneWithinTheMarginIsNeitherInsideNorOutside) {
+  const SetupView sv = axis_view();
+  // x = z lies on the right image edge (u = width for fx = cx = 32 at 90 degrees).
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{0, 0, 5}, {5, 0, 5}}, identity(), sv), Placement::Straddles);
+  EXPECT_EQ(place_points(std::vector<Vec3f>{{5, 0, 5}, {6, 0, 6}}, identity(), sv), Placement::Straddles);
+}
+
+TEST(ItemPlacement, TheInstanceTransformIsApplied) {
+  const std::vector<Vec3f> pts = {{0, 0, 0}, {0.5f, 0.5f, 0.5f}};
+  Eigen::Matrix<double, 3, 4> m = identity();
+  m(2, 3) = 5.0;  // moved 5 m in front of the camera
+  EXPECT_EQ(place_points(pts, m, axis_view()), Placement::Inside);
+  m(2, 3) = -5.0;  // behind it
+  EXPECT_EQ(place_points(pts, m, axis_view()), Placement::Outside);
+}
+
+TEST(ItemPlacement, PlacedRunsRenderLikeTheSameTrianglesTestedOneByOne) {
+  // A 32 m terrain chunk at 0.5 m (64 x 64 quads: one 128-triangle run per row) seen from 10 m
+  // up, off to one side, with the far plane cutting it: the instance straddles the view, so its
+  // runs are placed, and its rows lie inside, outside (beyond the far plane) or across the view
+  // (its side). Shuffled, the same triangles make every run sparse (tested one by one).
+  const auto height = [](float x, float y) { return 0.8f * std::sin(0.21f * x) * std::cos(0.17f * y); };
+  Mesh grid = test::make_heightfield(-16.0f, -16.0f, 64, 0.5f, height);
+  Mesh shuffled = grid;
+  std::vector<uint32_t> order(grid.triangle_count());
+  std::iota(order.begin(), order.end(), 0u);
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  for (size_t t = 0; t < order.size(); ++t)
+    for (int k = 0; k < 3; ++k) shuffled.indices[t * 3 + size_t(k)] = grid.indices[size_t(order[t]) * 3 + size_t(k)];
+  Camera cam = Camera::from_fov(320, 200, 90.0, 0.05, 45.0);
+  cam.camera_to_world = pose_from_angles(Vec3d(-20.0, -40.0, 10.0), 90.0, -15.0, 0.0);
+  // Runs of the ordered grid (128 triangles, as the geometry pass places them) take all three placements.
+  const SetupView sv(ViewProjection::from_camera(cam));
+  const Eigen::Matrix<double, 3, 4> m = sv.view.world_to_view.topRows<3>();
+  int placements[3] = {};
+  for (size_t t = 0; t < grid.triangle_count(); t += 128) {
+    const auto [lo, hi] = std::minmax_element(grid.indices.begin() + ptrdiff_t(t) * 3,
+                                              grid.indices.begin() + ptrdiff_t(std::min(t + 128, grid.triangle_count())) * 3);
+    ++placements[int(place_points({grid.positions.data() + *lo, size_t(*hi - *lo + 1)}, m, sv))];
+  }
+  EXPECT_GT(placements[int(Placement::Outside)], 0);
+  EXPECT_GT(placements[int(Placement::Inside)], 0);
+  EXPECT_GT(placements[int(Placement::Straddles)], 0);
+  test::OwnedScene a, b;
+  a.add_instance(a.add_mesh(std::move(grid)));
+  b.add_instance(b.add_mesh(std::move(shuffled)));
+  Renderer ra, rb;
+  RenderStats sa, sb;
+  const VisibilityBuffer va = ra.render_visibility(a.scene, cam, RenderOptions{}, &sa);
+  const VisibilityBuffer& vb = rb.render_visibility(b.scene, cam, RenderOptions{}, &sb);
+  EXPECT_EQ(sa.triangles_after_cull, sb.triangles_after_cull);
+  EXPECT_EQ(sa.triangles_rasterised, sb.triangles_rasterised);
+  size_t covered = 0, differ = 0;
+  for (size_t i = 0; i < va.size(); ++i) {
+    covered += va.instance[i] != kNoInstance;
+    const bool same = va.instance[i] == vb.instance[i] && va.depth[i] == vb.depth[i] &&
+                      (va.instance[i] == kNoInstance || va.triangle[i] == order[vb.triangle[i]]);
+    differ += !same;
+  }
+  EXPECT_GT(covered, 2000u);  // the chunk covers a few thousand pixels
+  EXPECT_EQ(differ, 0u);
+}
+
+}  // namespace
+}  // namespace silva::render
