@@ -90,27 +90,11 @@ M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
   return hn::LoadMaskBits(d, opaque_bits);
 }
 
-/// Depth-tests and writes the covered lanes `in` of one row segment (pixels x.. of tile row y,
-/// image x coordinates vx); alpha-tests the lanes that would win first. Returns the writes made.
+/// Writes the lanes `win` of one row segment (depth values `depth`) and resolves the lanes `tie`
+/// (equal stored depth) by key; dp, kp point at the segment's depth and key. Returns the writes made.
 template <class D, class V, class M>
-size_t write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s, int x,
-                     int y, V vx, M in) {
+size_t write_winners(D d, const RasterTri& t, V depth, M win, M tie, double* dp, uint64_t* kp) {
   const hn::RebindToUnsigned<D> du;
-  const size_t N = hn::Lanes(d);
-  const double py = double(job.y0 + y);
-  const auto depth = hn::Add(hn::Set(d, t.depth.c + t.depth.b * py), hn::Mul(hn::Set(d, t.depth.a), vx));
-  const size_t off = size_t(y) * size_t(job.stride) + size_t(x);
-  double* dp = s.depth.data() + off;
-  uint64_t* kp = s.key.data() + off;
-  const auto stored = hn::LoadU(d, dp);
-  auto win = hn::And(in, hn::Gt(depth, stored));
-  auto tie = hn::And(in, hn::Eq(depth, stored));
-  if (alpha != nullptr) {
-    if (hn::AllFalse(d, hn::Or(win, tie))) return 0;
-    const auto opaque = opaque_lanes(d, *alpha, vx, py, hn::Or(win, tie));
-    win = hn::And(win, opaque);
-    tie = hn::And(tie, opaque);
-  }
   if (hn::AllFalse(d, tie)) {
     hn::BlendedStore(depth, win, d, dp);
     hn::BlendedStore(hn::Set(du, t.key), hn::RebindMask(du, win), du, kp);
@@ -121,7 +105,94 @@ size_t write_segment(D d, const RasterTri& t, const AlphaAttrib* alpha, const Ti
   hn::Store(depth, d, dv);
   hn::StoreMaskBits(d, win, win_bits);
   hn::StoreMaskBits(d, tie, tie_bits);
-  return size_t(write_lanes_scalar(t, dv, win_bits, tie_bits, N, dp, kp));
+  return size_t(write_lanes_scalar(t, dv, win_bits, tie_bits, hn::Lanes(d), dp, kp));
+}
+
+/// Reverse depth of the triangle on the lanes of row py at image x coordinates vx.
+template <class D, class V>
+V depth_lanes(D d, const RasterTri& t, V vx, double py) {
+  return hn::Add(hn::Set(d, t.depth.c + t.depth.b * py), hn::Mul(hn::Set(d, t.depth.a), vx));
+}
+
+/// Offset of tile pixel (x, y) in the tile planes.
+size_t plane_offset(const TileJob& job, int x, int y) { return size_t(y) * size_t(job.stride) + size_t(x); }
+
+/// Edge values of one block column on the lanes of its first row, and their steps per row down.
+template <class V>
+struct EdgeRows {
+  V e0, e1, e2;     ///< The three edge functions at the current row.
+  V eb0, eb1, eb2;  ///< Their change per row down.
+  /// Steps to the next row (exact: integer-valued doubles).
+  void step() {
+    e0 = hn::Add(e0, eb0);
+    e1 = hn::Add(e1, eb1);
+    e2 = hn::Add(e2, eb2);
+  }
+  /// Lanes of `lanes` inside all three edges.
+  template <class D, class M>
+  M inside(D d, M lanes) const {
+    const auto zero = hn::Zero(d);
+    return hn::And(hn::And(lanes, hn::Ge(e0, zero)), hn::And(hn::Ge(e1, zero), hn::Ge(e2, zero)));
+  }
+};
+
+/// Covered rows of one opaque block column: depth-tests and writes row by row. Adds the covered
+/// lanes to `fragments` and returns the writes made.
+template <class D, class V, class M>
+uint64_t raster_rows(D d, const RasterTri& t, const TileJob& job, TileScratch& s, int x, V vx, M lanes,
+                     EdgeRows<V> e, int y_begin, int y_end, uint64_t& fragments) {
+  uint64_t writes = 0;
+  for (int y = y_begin; y <= y_end; ++y, e.step()) {
+    const auto in = e.inside(d, lanes);
+    if (hn::AllFalse(d, in)) continue;
+    fragments += hn::CountTrue(d, in);
+    const auto depth = depth_lanes(d, t, vx, double(job.y0 + y));
+    const size_t off = plane_offset(job, x, y);
+    const auto stored = hn::LoadU(d, s.depth.data() + off);
+    writes += write_winners(d, t, depth, hn::And(in, hn::Gt(depth, stored)), hn::And(in, hn::Eq(depth, stored)),
+                            s.depth.data() + off, s.key.data() + off);
+  }
+  return writes;
+}
+
+/// Covered rows of one alpha-tested block column, in three passes: the coverage and depth tests
+/// of every row without branches, then the alpha tests of the rows with candidates back to back
+/// (independent chains of divisions and gathers the core overlaps), then the writes. Each pixel
+/// is covered once by the triangle, so testing all rows before writing any is the same as row by
+/// row. Adds the covered lanes to `fragments` and returns the writes made.
+template <class D, class V, class M>
+uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, const TileJob& job, TileScratch& s,
+                            int x, V vx, M lanes, EdgeRows<V> e, int y_begin, int y_end, uint64_t& fragments) {
+  uint8_t win_bits[kDepthBlockSize], tie_bits[kDepthBlockSize], opaque_bits[kDepthBlockSize];
+  int rows[kDepthBlockSize];
+  int candidates = 0;
+  for (int y = y_begin; y <= y_end; ++y, e.step()) {
+    const auto in = e.inside(d, lanes);
+    fragments += hn::CountTrue(d, in);
+    const auto depth = depth_lanes(d, t, vx, double(job.y0 + y));
+    const auto stored = hn::LoadU(d, s.depth.data() + plane_offset(job, x, y));
+    const auto win = hn::And(in, hn::Gt(depth, stored)), tie = hn::And(in, hn::Eq(depth, stored));
+    const int r = y - y_begin;
+    hn::StoreMaskBits(d, win, &win_bits[r]);
+    hn::StoreMaskBits(d, tie, &tie_bits[r]);
+    rows[candidates] = r;
+    candidates += (win_bits[r] | tie_bits[r]) != 0 ? 1 : 0;
+  }
+  for (int k = 0; k < candidates; ++k) {
+    const int r = rows[k];
+    const uint8_t candidate = uint8_t(win_bits[r] | tie_bits[r]);
+    const auto opaque = opaque_lanes(d, alpha, vx, double(job.y0 + y_begin + r), hn::LoadMaskBits(d, &candidate));
+    hn::StoreMaskBits(d, opaque, &opaque_bits[r]);
+  }
+  uint64_t writes = 0;
+  for (int k = 0; k < candidates; ++k) {
+    const int r = rows[k], y = y_begin + r;
+    const uint8_t win = uint8_t(win_bits[r] & opaque_bits[r]), tie = uint8_t(tie_bits[r] & opaque_bits[r]);
+    const size_t off = plane_offset(job, x, y);
+    writes += write_winners(d, t, depth_lanes(d, t, vx, double(job.y0 + y)), hn::LoadMaskBits(d, &win),
+                            hn::LoadMaskBits(d, &tie), s.depth.data() + off, s.key.data() + off);
+  }
+  return writes;
 }
 
 /// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
@@ -137,9 +208,7 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   if (t.depth.at(t.depth.a >= 0 ? ix1 : ix0, t.depth.b >= 0 ? iy1 : iy0) < block_min) return false;
   for (const EdgeFunction& e : t.edge)
     if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;
-  const auto zero = hn::Zero(d);
   const double b0 = t.edge[0].b(), b1 = t.edge[1].b(), b2 = t.edge[2].b();
-  const auto eb0 = hn::Set(d, b0), eb1 = hn::Set(d, b1), eb2 = hn::Set(d, b2);
   const double py0 = double(iy0);
   const int block_x0 = x_first / kDepthBlockSize * kDepthBlockSize;
   // Counted in locals: counters may alias the key plane (both uint64_t), which would make every
@@ -147,17 +216,14 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   uint64_t fragments = 0, writes = 0;
   for (int x = block_x0 + (x_first - block_x0) / N * N; x <= x_last; x += N) {
     const auto vx = hn::Add(hn::Set(d, double(job.x0 + x)), hn::Iota(d, 0.0));
-    auto e0 = hn::Add(hn::Set(d, t.edge[0].c + b0 * py0), hn::Mul(hn::Set(d, t.edge[0].a()), vx));
-    auto e1 = hn::Add(hn::Set(d, t.edge[1].c + b1 * py0), hn::Mul(hn::Set(d, t.edge[1].a()), vx));
-    auto e2 = hn::Add(hn::Set(d, t.edge[2].c + b2 * py0), hn::Mul(hn::Set(d, t.edge[2].a()), vx));
+    const EdgeRows<hn::Vec<DTag>> e{hn::Add(hn::Set(d, t.edge[0].c + b0 * py0), hn::Mul(hn::Set(d, t.edge[0].a()), vx)),
+                                   hn::Add(hn::Set(d, t.edge[1].c + b1 * py0), hn::Mul(hn::Set(d, t.edge[1].a()), vx)),
+                                   hn::Add(hn::Set(d, t.edge[2].c + b2 * py0), hn::Mul(hn::Set(d, t.edge[2].a()), vx)),
+                                   hn::Set(d, b0), hn::Set(d, b1), hn::Set(d, b2)};
     auto lanes = hn::FirstN(d, size_t(std::min(x_last + 1 - x, N)));
     if (x < x_first) lanes = hn::AndNot(hn::FirstN(d, size_t(x_first - x)), lanes);
-    for (int y = y_begin; y <= y_end; ++y, e0 = hn::Add(e0, eb0), e1 = hn::Add(e1, eb1), e2 = hn::Add(e2, eb2)) {
-      const auto in = hn::And(hn::And(lanes, hn::Ge(e0, zero)), hn::And(hn::Ge(e1, zero), hn::Ge(e2, zero)));
-      if (hn::AllFalse(d, in)) continue;
-      fragments += hn::CountTrue(d, in);
-      writes += write_segment(d, t, alpha, job, s, x, y, vx, in);
-    }
+    writes += alpha != nullptr ? raster_masked_rows(d, t, *alpha, job, s, x, vx, lanes, e, y_begin, y_end, fragments)
+                               : raster_rows(d, t, job, s, x, vx, lanes, e, y_begin, y_end, fragments);
   }
   counters.fragments += fragments;
   counters.writes += writes;
