@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
@@ -50,12 +51,15 @@ struct VertexRange {
 /// index past the vertices (the triangle loop then reports it) or is sparse (mostly unused).
 VertexRange item_vertex_range(const Mesh& mesh, uint32_t t_begin, uint32_t t_end) {
   if (t_begin == t_end) return {};
-  const auto [lo, hi] = std::minmax_element(mesh.indices.begin() + ptrdiff_t(t_begin) * 3,
-                                            mesh.indices.begin() + ptrdiff_t(t_end) * 3);
-  if (*hi >= mesh.positions.size()) return {};
-  const uint32_t count = *hi - *lo + 1;
+  uint32_t lo = UINT32_MAX, hi = 0;  // a plain loop: the compiler vectorises it (minmax_element it does not)
+  for (size_t i = size_t(t_begin) * 3; i < size_t(t_end) * 3; ++i) {
+    lo = std::min(lo, mesh.indices[i]);
+    hi = std::max(hi, mesh.indices[i]);
+  }
+  if (hi >= mesh.positions.size()) return {};
+  const uint32_t count = hi - lo + 1;
   if (count > 4 * (t_end - t_begin)) return {};
-  return {*lo, count};
+  return {lo, count};
 }
 
 /// What the triangle runs of one item share.
@@ -167,10 +171,10 @@ void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<cons
   for (uint32_t i = 0; i < scene.meshes.size(); ++i)
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
   for (GeometryStore& s : stores) s.reset(grid.count());
-  tbb::parallel_for(size_t(0), items.size(), [&](size_t i) {
-    GeometryStore& store = stores.local();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, items.size()), [&](const tbb::blocked_range<size_t>& r) {
+    GeometryStore& store = stores.local();  // a thread-id lookup: once per range, not per item
     if (store.bins.size() != size_t(grid.count())) store.reset(grid.count());
-    process_item(scene, view, items[i], cull_back, masks, grid, store);
+    for (size_t i = r.begin(); i != r.end(); ++i) process_item(scene, view, items[i], cull_back, masks, grid, store);
   });
 }
 
