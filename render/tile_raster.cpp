@@ -57,8 +57,7 @@ uint64_t write_lanes_scalar(const RasterTri& t, const double* dv, const uint8_t*
 template <class DF, class VF>
 auto texel_lanes(DF df, VF t, int n) {
   const hn::RebindToSigned<DF> di;
-  VF f = hn::ConvertTo(df, hn::ConvertTo(di, t));
-  f = hn::IfThenElse(hn::Gt(f, t), hn::Sub(f, hn::Set(df, 1.0f)), f);
+  const VF f = hn::Floor(t);  // exactly AlphaMask::texel's truncate-and-step-down for |t| < 2^31
   const auto i = hn::ConvertTo(di, hn::Mul(hn::Sub(t, f), hn::Set(df, float(n))));
   return hn::Min(i, hn::Set(di, n - 1));
 }
