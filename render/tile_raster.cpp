@@ -62,12 +62,12 @@ auto texel_lanes(DF df, VF t, int n) {
   return hn::Min(i, hn::Set(di, n - 1));
 }
 
-/// Lanes of `live` whose pixel centre (x = vx, y = py) is opaque in the triangle's alpha mask:
-/// the U, V, W planes on double lanes, the texture coordinates as float quotients and the texel
-/// indices on float lanes (AlphaAttrib's documented operations), then one gather of the texels'
-/// opacity words. Lanes outside `live` read word 0 and are dropped.
-template <class D, class V, class M>
-M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
+/// Lanes of `live` (bit k = lane k) whose pixel centre (x = vx, y = py) is opaque in the
+/// triangle's alpha mask, as bits: the U, V, W planes on double lanes, the texture coordinates as
+/// float quotients and the texel indices on float lanes (AlphaAttrib's documented operations),
+/// then one gather of the texels' opacity words. Lanes outside `live` read word 0 and are dropped.
+template <class D, class V>
+uint8_t opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, uint8_t live) {
   const auto plane = [&](const PixelPlane& p) { return hn::Add(hn::Set(d, p.c + p.b * py), hn::Mul(hn::Set(d, p.a), vx)); };
   const hn::Rebind<float, D> df;
   const hn::RebindToSigned<decltype(df)> di;
@@ -77,16 +77,14 @@ M opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, M live) {
   const auto s = hn::Div(hn::DemoteTo(df, plane(a.u)), w);
   const auto t = hn::Div(hn::DemoteTo(df, plane(a.v)), w);
   const auto texel = hn::Add(hn::Mul(texel_lanes(df, t, bits.height), hn::Set(di, bits.width)), texel_lanes(df, s, bits.width));
-  uint8_t live_bits[8] = {};
-  hn::StoreMaskBits(d, live, live_bits);
-  const auto live_f = hn::RebindMask(di, hn::LoadMaskBits(df, live_bits));
+  const auto live_f = hn::RebindMask(di, hn::LoadMaskBits(df, &live));
   // Clamped into the mask so that no lane can read outside it, whatever its coordinates were.
   const auto index = hn::IfThenElseZero(live_f, hn::Min(hn::Max(texel, hn::Zero(di)), hn::Set(di, bits.width * bits.height - 1)));
   const auto words = hn::GatherIndex(du, bits.words.data(), hn::ShiftRight<5>(index));
   const auto bit = hn::And(hn::Shr(words, hn::BitCast(du, hn::And(index, hn::Set(di, 31)))), hn::Set(du, 1u));
-  uint8_t opaque_bits[8] = {};
-  hn::StoreMaskBits(du, hn::And(hn::RebindMask(du, live_f), hn::Ne(bit, hn::Zero(du))), opaque_bits);
-  return hn::LoadMaskBits(d, opaque_bits);
+  uint8_t opaque = 0;
+  hn::StoreMaskBits(du, hn::And(hn::RebindMask(du, live_f), hn::Ne(bit, hn::Zero(du))), &opaque);
+  return opaque;
 }
 
 /// Writes the lanes `win` of one row segment (depth values `depth`) and resolves the lanes `tie`
@@ -179,9 +177,7 @@ uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, c
   }
   for (int k = 0; k < candidates; ++k) {
     const int r = rows[k];
-    const uint8_t candidate = uint8_t(win_bits[r] | tie_bits[r]);
-    const auto opaque = opaque_lanes(d, alpha, vx, double(job.y0 + y_begin + r), hn::LoadMaskBits(d, &candidate));
-    hn::StoreMaskBits(d, opaque, &opaque_bits[r]);
+    opaque_bits[r] = opaque_lanes(d, alpha, vx, double(job.y0 + y_begin + r), uint8_t(win_bits[r] | tie_bits[r]));
   }
   uint64_t writes = 0;
   for (int k = 0; k < candidates; ++k) {
