@@ -75,20 +75,22 @@ struct ItemContext {
   GeometryStore& store;                   ///< Output.
 };
 
-/// Sets up and bins triangles [t_begin, t_end) of the item, whose vertices `range` covers;
-/// `inside`: none of them needs a frustum test or clipping.
-void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexRange range, bool inside) {
+/// Sets up and bins triangles [t_begin, t_end) of the item, whose vertices `range` covers and
+/// lie where `place` says (never Outside).
+void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexRange range, Placement place) {
   const Mesh& mesh = c.mesh;
   GeometryStore& store = c.store;
   const size_t vertex_count = mesh.positions.size();
-  // Every vertex projected and no triangle needing the frustum test or clipping: set up on SIMD
-  // lanes, the used vertices transformed and projected at once (the same bits as one by one).
-  const bool lanes = inside && c.sv.view.perspective && range.count > 0;
+  // No triangle needing clipping: set up on SIMD lanes (the frustum test on the lanes when the run
+  // crosses a frustum plane), the used vertices transformed and projected at once (the same bits
+  // as one by one).
+  const bool lanes = (place == Placement::Inside || place == Placement::Unclipped) && c.sv.view.perspective &&
+                     range.count > 0;
   if (lanes)
     project_vertices(c.m, c.sv.view, mesh.positions.data() + range.first, range.count,
                      store.vertices.fill(range.first, range.count));
   TriangleInput in;
-  in.inside_view = inside;
+  in.inside_view = place == Placement::Inside;
   TriBounds bounds[kMaxSetupTriangles];
   for (const MeshPart& part : mesh.parts) {
     const uint32_t p_begin = std::max(t_begin, part.first_index / 3);
@@ -96,8 +98,10 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
     in.mask = part.mask ? c.masks.find(part.mask.get()) : nullptr;
     in.cull_back = c.cull_back && !part.double_sided;
     if (lanes && p_begin < p_end) {
-      setup_triangles_lanes(c.sv, LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
-                                                mesh.uvs.data(), in.mask, in.cull_back, uint64_t(c.item.instance) << 32},
+      setup_triangles_lanes(c.sv,
+                            LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
+                                          mesh.uvs.data(), in.mask, in.cull_back, uint64_t(c.item.instance) << 32,
+                                          place == Placement::Unclipped},
                             c.grid, store);
       continue;
     }
@@ -121,7 +125,8 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
 
 /// Sets up and bins the triangles of one item into `store`. An item of an instance that straddles
 /// the view is placed run by run (kPlacementRun triangles): runs wholly outside are dropped (each
-/// of their triangles would fail the same frustum plane), runs wholly inside go to the SIMD setup.
+/// of their triangles would fail the same frustum plane), runs that need no clipping go to the
+/// SIMD setup.
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
                   const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store) {
   const Instance& inst = scene.instances[item.instance];
@@ -130,7 +135,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
   store.vertices.begin_item(c.mesh.positions.size());
   if (item.inside_view) {
-    process_run(c, t_begin, t_end, item_vertex_range(c.mesh, t_begin, t_end), true);
+    process_run(c, t_begin, t_end, item_vertex_range(c.mesh, t_begin, t_end), Placement::Inside);
     return;
   }
   for (uint32_t r = t_begin; r < t_end; r += kPlacementRun) {
@@ -139,7 +144,7 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
     const Placement place = range.count > 0
                                 ? place_points({c.mesh.positions.data() + range.first, range.count}, c.m, sv)
                                 : Placement::Straddles;
-    if (place != Placement::Outside) process_run(c, r, r_end, range, place == Placement::Inside);
+    if (place != Placement::Outside) process_run(c, r, r_end, range, place);
   }
 }
 

@@ -50,9 +50,10 @@ Placement place_points(std::span<const Vec3f> positions, const Eigen::Matrix<dou
   bool outside = false, inside = true;
   test_planes(corners, extent, sv.frustum, sv.frustum_count, outside, inside);
   if (outside) return Placement::Outside;
-  bool clip_outside = false;
-  test_planes(corners, extent, sv.clip, sv.clip_count, clip_outside, inside);
-  return inside ? Placement::Inside : Placement::Straddles;
+  bool clip_outside = false, clip_inside = true;
+  test_planes(corners, extent, sv.clip, sv.clip_count, clip_outside, clip_inside);
+  if (!clip_inside) return Placement::Straddles;
+  return inside ? Placement::Inside : Placement::Unclipped;
 }
 
 }  // namespace silva::render

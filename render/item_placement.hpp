@@ -1,7 +1,7 @@
 #pragma once
 /// @file Where a run of an instance's vertices lies relative to a view, so the geometry pass can
-/// drop a run wholly outside the view and set up a run wholly inside it without per-triangle
-/// plane tests (on SIMD lanes), even when the instance as a whole straddles the view.
+/// drop a run wholly outside the view and set up on SIMD lanes a run that needs no clipping, even
+/// when the instance as a whole straddles the view.
 #include <cstdint>
 #include <span>
 
@@ -14,7 +14,10 @@ namespace silva::render {
 enum class Placement : uint8_t {
   Outside,    ///< Every point is behind one frustum plane: no triangle of them can be drawn.
   Inside,     ///< Every point is in front of every frustum and clip plane: no triangle needs a test.
-  Straddles,  ///< Neither (or a point is not finite): triangles are tested one by one.
+  Unclipped,  ///< Every point is in front of every clip plane, not of every frustum plane: no
+              ///< triangle needs clipping, each needs the frustum test.
+  Straddles,  ///< A point may be behind a clip plane (or is not finite): triangles are tested and
+              ///< clipped one by one.
 };
 
 /// Places the object-space points `positions` (all of them) transformed by `m` (object -> view)

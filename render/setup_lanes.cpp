@@ -83,8 +83,27 @@ auto edge_lanes(D d, V ax, V ay, V bx, V by, V px, V py, double (*out)[kMaxLanes
   return hn::Ge(at, zero);
 }
 
-/// Sets up the lanes of one group (inputs filled): every result array and the two masks.
-void setup_group(const SetupView& sv, bool cull_back, bool masked, size_t n, Lanes& L) {
+/// Lanes of `alive` whose triangle (p0, p1, p2) is not wholly behind one of sv's frustum planes
+/// (setup_triangle's trivial reject, plane values in its order).
+template <class D, class V, class M>
+M in_frustum(D d, const SetupView& sv, const V3<V>& p0, const V3<V>& p1, const V3<V>& p2, M alive) {
+  const auto zero = hn::Zero(d);
+  for (int k = 0; k < sv.frustum_count; ++k) {
+    const Vec4d& pl = sv.frustum[k];
+    const auto behind = [&](const V3<V>& p) {
+      const auto v = hn::Add(hn::Add(hn::Add(hn::Mul(hn::Set(d, pl.x()), p.x), hn::Mul(hn::Set(d, pl.y()), p.y)),
+                                     hn::Mul(hn::Set(d, pl.z()), p.z)),
+                             hn::Set(d, pl.w()));
+      return hn::Lt(v, zero);
+    };
+    alive = hn::AndNot(hn::And(behind(p0), hn::And(behind(p1), behind(p2))), alive);
+  }
+  return alive;
+}
+
+/// Sets up the lanes of one group (inputs filled): every result array and the two masks; with
+/// `frustum_test`, triangles wholly behind a frustum plane are dropped first (not counted).
+void setup_group(const SetupView& sv, bool cull_back, bool masked, bool frustum_test, size_t n, Lanes& L) {
   const DTag d;
   const ViewProjection& view = sv.view;
   const PixelScales& sc = sv.scales;
@@ -92,6 +111,7 @@ void setup_group(const SetupView& sv, bool cull_back, bool masked, size_t n, Lan
   const auto p0 = load3(0), p1 = load3(1), p2 = load3(2);
   auto finite = hn::FirstN(d, n);
   for (const auto* p : {&p0, &p1, &p2}) finite = hn::And(finite, hn::And(hn::IsFinite(p->x), hn::And(hn::IsFinite(p->y), hn::IsFinite(p->z))));
+  if (frustum_test) finite = in_frustum(d, sv, p0, p1, p2, finite);
   const auto sub3 = [](const auto& a, const auto& b) { return V3<hn::Vec<DTag>>{hn::Sub(a.x, b.x), hn::Sub(a.y, b.y), hn::Sub(a.z, b.z)}; };
   const auto e1 = sub3(p1, p0), e2 = sub3(p2, p0);
   const auto nrm = cross_lanes(e1, e2);
@@ -189,7 +209,7 @@ void SetupTrianglesImpl(const SetupView& sv, const LaneTriangles& in, const Tile
         }
       }
     }
-    setup_group(sv, in.cull_back, masked, n, L);
+    setup_group(sv, in.cull_back, masked, in.frustum_test, n, L);
     for (size_t k = 0; k < n; ++k) {
       store.counters.after_cull += (L.after_cull[k / 8] >> (k % 8)) & 1u;
       if (!((L.keep[k / 8] >> (k % 8)) & 1u)) continue;

@@ -10,8 +10,8 @@
 namespace silva::render {
 
 /// A run of triangles of one mesh part whose vertices are all projected (SetupVertex::projected)
-/// and whose instance lies inside every frustum plane of a perspective view, so that no triangle
-/// needs the frustum test or clipping.
+/// and lie in front of every clip plane of a perspective view, so that no triangle needs clipping;
+/// the frustum test is made on the lanes when `frustum_test` is set (the run crosses a frustum plane).
 struct LaneTriangles {
   const uint32_t* indices = nullptr;      ///< The mesh's index buffer (3 per triangle).
   uint32_t first = 0;                     ///< First triangle.
@@ -21,6 +21,7 @@ struct LaneTriangles {
   const AlphaBits* mask = nullptr;        ///< Opacity bits of the part's mask, or null.
   bool cull_back = true;                  ///< Drop triangles that face away.
   uint64_t key_base = 0;                  ///< instance << 32: triangle t's key is key_base | t.
+  bool frustum_test = false;              ///< Drop triangles wholly behind one frustum plane.
 };
 
 /// Sets up `in`'s triangles on SIMD lanes and bins them into `store`: appends and bins exactly

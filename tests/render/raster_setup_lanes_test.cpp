@@ -32,15 +32,16 @@ uint32_t add_vertex(Soup& s, const ViewProjection& view, const Vec3d& p, float u
   return uint32_t(s.vertices.size() - 1);
 }
 
-/// Random triangles 4-40 m away: large, small, sub-pixel (one candidate pixel), degenerate
+/// Random triangles z_near..z_far m away, centred within `spread` times the image's half extent
+/// (1: inside the 90-degree 16:9 image): large, small, sub-pixel (one candidate pixel), degenerate
 /// (repeated vertex), both windings, a few sharing vertices and one with a non-finite vertex.
-Soup make_soup(const ViewProjection& view, unsigned seed) {
+Soup make_soup(const ViewProjection& view, unsigned seed, double z_near = 4.0, double z_far = 40.0, double spread = 0.8) {
   Soup s;
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (int t = 0; t < 603; ++t) {
-    const double z = 4.0 + 36.0 * u01(gen);
-    const Vec3d c((u01(gen) - 0.5) * 1.6 * z, (u01(gen) - 0.5) * 0.9 * z, z);
+    const double z = z_near + (z_far - z_near) * u01(gen);
+    const Vec3d c((u01(gen) - 0.5) * 2.0 * spread * z, (u01(gen) - 0.5) * 1.125 * spread * z, z);
     const double size = t % 3 == 0 ? 0.002 : (t % 3 == 1 ? 0.05 : 1.5);  // ~0.1 px, a few px, large
     uint32_t v[3];
     for (uint32_t& i : v)
@@ -56,12 +57,12 @@ Soup make_soup(const ViewProjection& view, unsigned seed) {
 
 /// The scalar front end: setup_triangle then bin, triangle by triangle.
 void scalar_setup(const SetupView& sv, const Soup& soup, const AlphaBits* mask, bool cull_back, uint32_t instance,
-                  const TileGrid& grid, GeometryStore& store) {
+                  bool inside_view, const TileGrid& grid, GeometryStore& store) {
   std::vector<SetupVertex> vertices = soup.vertices;
   TriangleInput in;
   in.mask = mask;
   in.cull_back = cull_back;
-  in.inside_view = true;
+  in.inside_view = inside_view;
   TriBounds bounds[kMaxSetupTriangles];
   for (uint32_t t = 0; t < soup.indices.size() / 3; ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -112,10 +113,12 @@ void expect_same_stores(const GeometryStore& want, const GeometryStore& got) {
   EXPECT_EQ(want.counters.clipped, got.counters.clipped);
 }
 
-TEST(SetupLanes, MatchTheScalarSetupOnEveryHighwayTarget) {
+/// Expects setup_triangles_lanes of `soup` (frustum test on the lanes when `frustum_test`) to
+/// equal the scalar setup on every Highway target, masked or not, culling back faces or not; the
+/// soup must emit more than `min_emitted` screen triangles.
+void expect_lanes_match_scalar(const Soup& soup, bool frustum_test, uint32_t min_emitted) {
   const SetupView sv(ViewProjection::from_camera(Camera::from_fov(1920, 1080, 90.0, 0.05, 150.0)));
   const TileGrid grid = TileGrid::make(1920, 1080, 64);
-  const Soup soup = make_soup(sv.view, 21);
   AlphaMask mask;
   mask.width = mask.height = 4;
   mask.alpha.assign(16, 255);
@@ -127,12 +130,13 @@ TEST(SetupLanes, MatchTheScalarSetupOnEveryHighwayTarget) {
     for (const AlphaBits* m : {static_cast<const AlphaBits*>(nullptr), &bits}) {
       GeometryStore want;
       want.reset(grid.count());
-      scalar_setup(sv, soup, m, cull_back, 7, grid, want);
+      scalar_setup(sv, soup, m, cull_back, 7, !frustum_test, grid, want);
       // The soup exercises every outcome: culled, rejected after culling, emitted over several tiles.
       EXPECT_LT(want.counters.after_cull, triangles);
       EXPECT_LT(want.counters.emitted, want.counters.after_cull);
-      EXPECT_GT(want.counters.emitted, triangles / 5);
+      EXPECT_GT(want.counters.emitted, min_emitted);
       EXPECT_GT(want.bin_entries, want.counters.emitted);
+      EXPECT_EQ(want.counters.clipped, 0u);
       for (const int64_t target : targets) {
         const test::PinnedTarget pinned(target);
         ASSERT_EQ(setup_simd_target(), target);
@@ -140,7 +144,8 @@ TEST(SetupLanes, MatchTheScalarSetupOnEveryHighwayTarget) {
         GeometryStore got;
         got.reset(grid.count());
         // Two runs, split so that a group boundary falls mid-vector on every target.
-        const LaneTriangles head{soup.indices.data(), 0, 13, soup.vertices.data(), soup.uvs.data(), m, cull_back, uint64_t(7) << 32};
+        const LaneTriangles head{soup.indices.data(), 0,         13,       soup.vertices.data(), soup.uvs.data(),
+                                 m,                   cull_back, uint64_t(7) << 32, frustum_test};
         LaneTriangles tail = head;
         tail.first = 13;
         tail.count = triangles - 13;
@@ -149,6 +154,30 @@ TEST(SetupLanes, MatchTheScalarSetupOnEveryHighwayTarget) {
         expect_same_stores(want, got);
       }
     }
+}
+
+TEST(SetupLanes, MatchTheScalarSetupOnEveryHighwayTarget) {
+  const ViewProjection view = ViewProjection::from_camera(Camera::from_fov(1920, 1080, 90.0, 0.05, 150.0));
+  expect_lanes_match_scalar(make_soup(view, 21), false, 603 / 5);
+}
+
+TEST(SetupLanes, TheFrustumTestOnLanesMatchesTheScalarSetupOnEveryHighwayTarget) {
+  // Triangles up to 1.6x beyond the image's sides and 40 m beyond the 150 m far plane (inside the
+  // guard band, in front of the near plane): the scalar setup tests each against the frustum.
+  const ViewProjection view = ViewProjection::from_camera(Camera::from_fov(1920, 1080, 90.0, 0.05, 150.0));
+  const Soup soup = make_soup(view, 22, 4.0, 190.0, 1.6);
+  {
+    // Without the frustum test some of these triangles would be kept: the test has work to do.
+    const SetupView sv(view);
+    GeometryStore all, tested;
+    const TileGrid grid = TileGrid::make(1920, 1080, 64);
+    all.reset(grid.count());
+    tested.reset(grid.count());
+    scalar_setup(sv, soup, nullptr, false, 7, true, grid, all);
+    scalar_setup(sv, soup, nullptr, false, 7, false, grid, tested);
+    EXPECT_GT(all.counters.after_cull, tested.counters.after_cull);
+  }
+  expect_lanes_match_scalar(soup, true, 603 / 30);
 }
 
 }  // namespace
