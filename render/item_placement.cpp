@@ -10,10 +10,16 @@ namespace {
 /// Relative margin that covers the rounding between a box corner's plane value and a vertex's.
 constexpr double kPlacementMargin = 1e-9;
 
-/// The verdict of the eight view-space corners `c` against `count` planes: `any_outside` when
-/// all corners are behind one plane, `all_inside` stays true while all are in front of every plane.
-void test_planes(const Vec3d (&c)[8], double extent, const Vec4d* planes, int count, bool& any_outside,
-                 bool& all_inside) {
+/// Where eight view-space corners lie against a set of planes.
+struct PlaneVerdict {
+  bool outside = false;  ///< All corners behind one plane.
+  bool inside = true;    ///< All corners in front of every plane.
+};
+
+/// The verdict of the eight view-space corners `c` (at most `extent` from the eye) against
+/// `count` planes, each with a margin covering rounding.
+PlaneVerdict test_planes(const Vec3d (&c)[8], double extent, const Vec4d* planes, int count) {
+  PlaneVerdict verdict;
   for (int k = 0; k < count; ++k) {
     const Vec4d& pl = planes[k];
     const double margin = kPlacementMargin * (std::abs(pl.w()) + pl.head<3>().norm() * extent);
@@ -23,9 +29,10 @@ void test_planes(const Vec3d (&c)[8], double extent, const Vec4d* planes, int co
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
-    any_outside = any_outside || hi < -margin;
-    all_inside = all_inside && lo > margin;
+    verdict.outside = verdict.outside || hi < -margin;
+    verdict.inside = verdict.inside && lo > margin;
   }
+  return verdict;
 }
 
 }  // namespace
@@ -47,13 +54,10 @@ Placement place_points(std::span<const Vec3f> positions, const Eigen::Matrix<dou
     corners[k] = to_view(m, o);
     extent = std::max(extent, corners[k].norm());
   }
-  bool outside = false, inside = true;
-  test_planes(corners, extent, sv.frustum, sv.frustum_count, outside, inside);
-  if (outside) return Placement::Outside;
-  bool clip_outside = false, clip_inside = true;
-  test_planes(corners, extent, sv.clip, sv.clip_count, clip_outside, clip_inside);
-  if (!clip_inside) return Placement::Straddles;
-  return inside ? Placement::Inside : Placement::Unclipped;
+  const PlaneVerdict frustum = test_planes(corners, extent, sv.frustum, sv.frustum_count);
+  if (frustum.outside) return Placement::Outside;
+  if (!test_planes(corners, extent, sv.clip, sv.clip_count).inside) return Placement::Straddles;
+  return frustum.inside ? Placement::Inside : Placement::Unclipped;
 }
 
 }  // namespace silva::render

@@ -153,10 +153,10 @@ uint64_t raster_rows(D d, const RasterTri& t, const TileJob& job, TileScratch& s
 }
 
 /// Covered rows of one alpha-tested block column, in three passes: the coverage and depth tests
-/// of every row without branches, then the alpha tests of the rows with candidates back to back
-/// (independent chains of divisions and gathers the core overlaps), then the writes. Each pixel
-/// is covered once by the triangle, so testing all rows before writing any is the same as row by
-/// row. Adds the covered lanes to `fragments` and returns the writes made.
+/// of every row without branches, then the alpha tests of the rows with candidates, then the
+/// writes (no per-row branch before the alpha test). Each pixel is covered once by the triangle,
+/// so testing all rows before writing any is the same as row by row. Adds the covered lanes to
+/// `fragments` and returns the writes made.
 template <class D, class V, class M>
 uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, const TileJob& job, TileScratch& s,
                             int x, V vx, M lanes, EdgeRows<V> e, int y_begin, int y_end, uint64_t& fragments) {
@@ -191,8 +191,9 @@ uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, c
 }
 
 /// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
-/// one 8x8 block, unless it lies outside one of its edges over that whole part. Edge values step
-/// down the rows by exact additions (integer-valued doubles). Returns true when it wrote a pixel.
+/// one 8x8 block, unless its depth plane is behind `block_min` over that whole part or the part
+/// lies outside one of its edges. Edge values step down the rows by exact additions
+/// (integer-valued doubles). Returns true when it wrote a pixel.
 bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
                   TileCounters& counters, double block_min, int x_first, int x_last, int y_begin, int y_end) {
   const DTag d;
