@@ -52,6 +52,19 @@ uint64_t write_lanes_scalar(const RasterTri& t, const double* dv, const uint8_t*
   return writes;
 }
 
+/// Values (c + b*y) + a*x of a plane on lanes of image x coordinates vx at row y: the operation
+/// order of PixelPlane::at and EdgeFunction::at, so lanes and scalar code agree bit for bit.
+template <class D, class V>
+V plane_lanes(D d, double c, double b, double a, double y, V vx) {
+  return hn::Add(hn::Set(d, c + b * y), hn::Mul(hn::Set(d, a), vx));
+}
+
+/// Reverse depth of the triangle on the lanes of row py at image x coordinates vx.
+template <class D, class V>
+V depth_lanes(D d, const RasterTri& t, V vx, double py) {
+  return plane_lanes(d, t.depth.c, t.depth.b, t.depth.a, py, vx);
+}
+
 /// Texel index per lane of coordinates t wrapped into [0, 1) over n texels: AlphaMask::opaque's
 /// scalar operations (truncate, step down when above t, scale, truncate, clamp) on float lanes.
 template <class DF, class VF>
@@ -68,7 +81,7 @@ auto texel_lanes(DF df, VF t, int n) {
 /// then one gather of the texels' opacity words. Lanes outside `live` read word 0 and are dropped.
 template <class D, class V>
 uint8_t opaque_lanes(D d, const AlphaAttrib& a, V vx, double py, uint8_t live) {
-  const auto plane = [&](const PixelPlane& p) { return hn::Add(hn::Set(d, p.c + p.b * py), hn::Mul(hn::Set(d, p.a), vx)); };
+  const auto plane = [&](const PixelPlane& p) { return plane_lanes(d, p.c, p.b, p.a, py, vx); };
   const hn::Rebind<float, D> df;
   const hn::RebindToSigned<decltype(df)> di;
   const hn::RebindToUnsigned<decltype(df)> du;
@@ -105,11 +118,6 @@ size_t write_winners(D d, const RasterTri& t, V depth, M win, M tie, double* dp,
   return size_t(write_lanes_scalar(t, dv, win_bits, tie_bits, hn::Lanes(d), dp, kp));
 }
 
-/// Reverse depth of the triangle on the lanes of row py at image x coordinates vx.
-template <class D, class V>
-V depth_lanes(D d, const RasterTri& t, V vx, double py) {
-  return hn::Add(hn::Set(d, t.depth.c + t.depth.b * py), hn::Mul(hn::Set(d, t.depth.a), vx));
-}
 
 /// Offset of tile pixel (x, y) in the tile planes.
 size_t plane_offset(const TileJob& job, int x, int y) { return size_t(y) * size_t(job.stride) + size_t(x); }
@@ -191,30 +199,23 @@ uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, c
 }
 
 /// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
-/// one 8x8 block, unless its depth plane is behind `block_min` over that whole part or the part
-/// lies outside one of its edges. Edge values step down the rows by exact additions
-/// (integer-valued doubles). Returns true when it wrote a pixel.
+/// one 8x8 block, which open_blocks let through. Edge values step down the rows by exact
+/// additions (integer-valued doubles). Returns true when it wrote a pixel.
 bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
-                  TileCounters& counters, double block_min, int x_first, int x_last, int y_begin, int y_end) {
+                  TileCounters& counters, int x_first, int x_last, int y_begin, int y_end) {
   const DTag d;
   const int N = int(hn::Lanes(d));
-  const int ix0 = job.x0 + x_first, ix1 = job.x0 + x_last, iy0 = job.y0 + y_begin, iy1 = job.y0 + y_end;
-  // The plane's computed values are monotone in x and y (rounding is), so the corner its slopes
-  // point to holds the largest depth any of these pixels gets.
-  if (t.depth.at(t.depth.a >= 0 ? ix1 : ix0, t.depth.b >= 0 ? iy1 : iy0) < block_min) return false;
-  for (const EdgeFunction& e : t.edge)
-    if (e.max_over(ix0, iy0, ix1, iy1) < 0.0) return false;
   const double b0 = t.edge[0].b(), b1 = t.edge[1].b(), b2 = t.edge[2].b();
-  const double py0 = double(iy0);
+  const double py0 = double(job.y0 + y_begin);
   const int block_x0 = x_first / kDepthBlockSize * kDepthBlockSize;
   // Counted in locals: counters may alias the key plane (both uint64_t), which would make every
   // covered row load and store them through memory.
   uint64_t fragments = 0, writes = 0;
   for (int x = block_x0 + (x_first - block_x0) / N * N; x <= x_last; x += N) {
     const auto vx = hn::Add(hn::Set(d, double(job.x0 + x)), hn::Iota(d, 0.0));
-    const EdgeRows<hn::Vec<DTag>> e{hn::Add(hn::Set(d, t.edge[0].c + b0 * py0), hn::Mul(hn::Set(d, t.edge[0].a()), vx)),
-                                   hn::Add(hn::Set(d, t.edge[1].c + b1 * py0), hn::Mul(hn::Set(d, t.edge[1].a()), vx)),
-                                   hn::Add(hn::Set(d, t.edge[2].c + b2 * py0), hn::Mul(hn::Set(d, t.edge[2].a()), vx)),
+    const EdgeRows<hn::Vec<DTag>> e{plane_lanes(d, t.edge[0].c, b0, t.edge[0].a(), py0, vx),
+                                   plane_lanes(d, t.edge[1].c, b1, t.edge[1].a(), py0, vx),
+                                   plane_lanes(d, t.edge[2].c, b2, t.edge[2].a(), py0, vx),
                                    hn::Set(d, b0), hn::Set(d, b1), hn::Set(d, b2)};
     auto lanes = hn::FirstN(d, size_t(std::min(x_last + 1 - x, N)));
     if (x < x_first) lanes = hn::AndNot(hn::FirstN(d, size_t(x_first - x)), lanes);
@@ -226,35 +227,63 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
   return writes > 0;
 }
 
+/// The blocks of one block row (bit bx for block bx) where bin entry `e` may write, rows
+/// [y_begin, y_end] (tile-local), tested on lanes of blocks: first the entry's depth bound against
+/// each block's minimum `bmin[bx]`, without reading its triangle; then, with the triangle (loaded
+/// into `t` on first need), over the part of each block the entry covers: its depth plane at the
+/// part's corner its slopes point to (the plane's computed values are monotone in x and y, so
+/// that corner holds the largest depth of the part) against the block's minimum, and each edge at
+/// the corner its gradient points to (exact). bmin must be readable up to a vector past the row.
+uint64_t open_blocks(const BinEntry& e, const TileSource& src, const TileJob& job, const double* bmin, int y_begin,
+                     int y_end, const RasterTri*& t) {
+  const DTag d;
+  const int N = int(hn::Lanes(d));
+  const double iy0 = double(job.y0 + y_begin), iy1 = double(job.y0 + y_end);
+  const int bx_last = e.x1 / kDepthBlockSize;
+  uint64_t open = 0;
+  for (int bx = e.x0 / kDepthBlockSize; bx <= bx_last; bx += N) {
+    const auto stored_min = hn::LoadU(d, bmin + bx);
+    auto m = hn::And(hn::FirstN(d, size_t(bx_last - bx + 1)), hn::Ge(hn::Set(d, e.depth_max), stored_min));
+    if (hn::AllFalse(d, m)) continue;
+    if (t == nullptr) t = &src.tris[e.index];
+    const auto left = hn::Mul(hn::Add(hn::Set(d, double(bx)), hn::Iota(d, 0.0)), hn::Set(d, double(kDepthBlockSize)));
+    const auto x0 = hn::Add(hn::Set(d, double(job.x0)), hn::Max(left, hn::Set(d, double(e.x0))));
+    const auto x1 = hn::Add(hn::Set(d, double(job.x0)),
+                            hn::Min(hn::Add(left, hn::Set(d, double(kDepthBlockSize - 1))), hn::Set(d, double(e.x1))));
+    const PixelPlane& p = t->depth;
+    const auto nearest = plane_lanes(d, p.c, p.b, p.a, p.b >= 0 ? iy1 : iy0, p.a >= 0 ? x1 : x0);
+    m = hn::AndNot(hn::Lt(nearest, stored_min), m);
+    for (const EdgeFunction& f : t->edge)
+      m = hn::And(m, hn::Ge(plane_lanes(d, f.c, f.b(), f.a(), f.dx >= 0 ? iy1 : iy0, f.dy <= 0 ? x1 : x0), hn::Zero(d)));
+    uint8_t bits = 0;
+    hn::StoreMaskBits(d, m, &bits);
+    open |= uint64_t(bits) << bx;
+  }
+  return open;
+}
+
 /// Index of 8x8 block (bx, by) of the tile in TileScratch::block_min.
 size_t block_index(const TileJob& job, int bx, int by) {
   return size_t(by) * size_t(job.stride / kDepthBlockSize) + size_t(bx);
 }
 
 /// Rasterises one bin entry into the 8x8 blocks of the tile it overlaps, skipping the blocks
-/// where it lies behind everything already drawn; its RasterTri is only read for the others.
-/// A block row's depth tests are made first, without branches, into a bit set of open blocks.
+/// open_blocks rules out; its RasterTri is only read when a block passes the entry's depth bound.
 void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, TileScratch& s,
                   TileCounters& counters) {
   static_assert(256 / kDepthBlockSize <= 64, "a tile row's blocks fit one 64-bit set");
   const RasterTri* t = nullptr;
-  const AlphaAttrib* alpha = nullptr;
-  const int bx0 = e.x0 / kDepthBlockSize, bx1 = e.x1 / kDepthBlockSize;
   for (int by = e.y0 / kDepthBlockSize; by <= e.y1 / kDepthBlockSize; ++by) {
     double* bmin = &s.block_min[block_index(job, 0, by)];
-    uint64_t open = 0;  // blocks where the triangle may be in front of something drawn
-    for (int bx = bx0; bx <= bx1; ++bx) open |= uint64_t(e.depth_max >= bmin[bx]) << bx;
-    if (open == 0) continue;
-    if (t == nullptr) {
-      t = &src.tris[e.index];
-      alpha = t->alpha == kNoAlpha ? nullptr : &src.alphas[t->alpha];
-    }
     const int y_begin = std::max(int(e.y0), by * kDepthBlockSize), y_end = std::min((by + 1) * kDepthBlockSize - 1, int(e.y1));
+    uint64_t open = open_blocks(e, src, job, bmin, y_begin, y_end, t);
+    if (open == 0) continue;
+    const AlphaAttrib* alpha = t->alpha == kNoAlpha ? nullptr : &src.alphas[t->alpha];
     for (; open != 0; open &= open - 1) {
       const int bx = std::countr_zero(open);
       const int x_first = std::max(int(e.x0), bx * kDepthBlockSize);
       const int x_last = std::min((bx + 1) * kDepthBlockSize - 1, int(e.x1));
-      if (raster_block(*t, alpha, job, s, counters, bmin[bx], x_first, x_last, y_begin, y_end))
+      if (raster_block(*t, alpha, job, s, counters, x_first, x_last, y_begin, y_end))
         bmin[bx] = block_minimum(s, job, bx, by);
     }
   }
@@ -273,7 +302,7 @@ void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t sou
   const size_t blocks = pixels / size_t(kDepthBlockSize * kDepthBlockSize);
   s.depth.assign(pixels, job.depth_clear);
   s.key.assign(pixels, kNoKey);
-  s.block_min.assign(blocks, job.depth_clear);
+  s.block_min.assign(blocks + kDepthBlockSize, job.depth_clear);  // + a vector for open_blocks' loads
   for (size_t k = 0; k < source_count; ++k) {
     const TileSource& src = sources[k];
     for (size_t i = 0; i < src.count; ++i) {
