@@ -62,26 +62,7 @@ Mesh reduce_mesh(const Mesh& full, float ratio) {
   std::vector<std::vector<uint32_t>> part_indices;
   for (const MeshPart& part : full.parts)
     part_indices.push_back(part.mask && part.index_count % 6 == 0 ? thin_cards(full, part, ratio, positions) : simplify_part(full, part, ratio));
-  // Compact: keep used vertices in their original order.
-  std::vector<uint32_t> remap(full.positions.size(), UINT32_MAX);
-  for (const auto& idx : part_indices)
-    for (uint32_t i : idx) remap[i] = 0;
-  Mesh out;
-  for (size_t v = 0; v < remap.size(); ++v) {
-    if (remap[v] == UINT32_MAX) continue;
-    remap[v] = uint32_t(out.positions.size());
-    out.positions.push_back(positions[v]);
-    out.normals.push_back(full.normals[v]);
-    out.uvs.push_back(full.uvs[v]);
-  }
-  for (size_t p = 0; p < full.parts.size(); ++p) {
-    MeshPart part = full.parts[p];
-    part.first_index = uint32_t(out.indices.size());
-    part.index_count = uint32_t(part_indices[p].size());
-    for (uint32_t i : part_indices[p]) out.indices.push_back(remap[i]);
-    out.parts.push_back(std::move(part));
-  }
-  return out;
+  return compact_mesh(full, positions, part_indices);
 }
 
 std::vector<Mesh> build_lods(const Mesh& full, std::span<const float> ratios) {

@@ -38,4 +38,27 @@ void Mesh::append(const Mesh& other) {
   }
 }
 
+Mesh compact_mesh(const Mesh& source, const std::vector<Vec3f>& positions,
+                  const std::vector<std::vector<uint32_t>>& part_indices) {
+  std::vector<uint32_t> remap(positions.size(), UINT32_MAX);
+  for (const auto& idx : part_indices)
+    for (uint32_t i : idx) remap[i] = 0;
+  Mesh out;
+  for (size_t v = 0; v < remap.size(); ++v) {
+    if (remap[v] == UINT32_MAX) continue;
+    remap[v] = uint32_t(out.positions.size());
+    out.positions.push_back(positions[v]);
+    out.normals.push_back(source.normals[v]);
+    out.uvs.push_back(source.uvs[v]);
+  }
+  for (size_t p = 0; p < source.parts.size(); ++p) {
+    MeshPart part = source.parts[p];
+    part.first_index = uint32_t(out.indices.size());
+    part.index_count = uint32_t(part_indices[p].size());
+    for (uint32_t i : part_indices[p]) out.indices.push_back(remap[i]);
+    out.parts.push_back(std::move(part));
+  }
+  return out;
+}
+
 }  // namespace silva

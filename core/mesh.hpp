@@ -59,4 +59,10 @@ struct Mesh {
   void append(const Mesh& other);
 };
 
+/// A mesh with `source`'s parts but new triangles: part p gets `part_indices[p]` (indices into
+/// `positions`, which stands in for source's positions and has their count). Keeps only the
+/// vertices used, in their original order, with source's normals and uvs.
+Mesh compact_mesh(const Mesh& source, const std::vector<Vec3f>& positions,
+                  const std::vector<std::vector<uint32_t>>& part_indices);
+
 }  // namespace silva

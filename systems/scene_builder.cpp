@@ -4,6 +4,7 @@
 
 #include "core/rng.hpp"
 #include "systems/collision_proxy.hpp"
+#include "systems/terrain_lod.hpp"
 
 namespace silva::world {
 
@@ -13,6 +14,7 @@ SceneBuilder::SceneBuilder(const assets::AssetLibrary& library) {
     render::MeshLods lods;
     for (const Mesh& m : a.lods) lods.lods.push_back(&m);
     lods.lod_screen_sizes = a.lod_screen_sizes;
+    lods.compute_bounds();
     asset_meshes_.push_back(std::move(lods));
   }
 }
@@ -30,18 +32,24 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
   size_t objects = 0;
   for (const auto& c : chunks) objects += c->objects.size();
   scene.instances.reserve(objects + 2 * chunks.size());
-  auto add_world_mesh = [&](const Mesh& mesh) {
+  // Bounds cached once here: the renderer would otherwise scan these large meshes every pass.
+  auto add_world_mesh = [&](const Mesh& mesh, const Mesh* coarse) {
     if (mesh.indices.empty()) return;
     render::MeshLods lods;
     lods.lods.push_back(&mesh);
+    if (coarse && !coarse->indices.empty()) {
+      lods.lods.push_back(coarse);
+      lods.lod_screen_sizes.push_back(kTerrainLodScreenSize);
+    }
+    lods.compute_bounds();
     scene.meshes.push_back(std::move(lods));
     render::Instance inst;
     inst.mesh = uint32_t(scene.meshes.size() - 1);
     scene.instances.push_back(inst);
   };
   for (const auto& c : chunks) {
-    add_world_mesh(c->terrain);
-    add_world_mesh(c->trail);
+    add_world_mesh(c->terrain, &c->terrain_lod);
+    add_world_mesh(c->trail, nullptr);
     for (const Vegetation& v : c->objects) {
       render::Instance inst;
       inst.object_to_world = object_to_world(v.position, v.yaw, v.scale);
