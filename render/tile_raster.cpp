@@ -328,13 +328,29 @@ void SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float*
   const hn::Rebind<float, decltype(dd)> df;
   const hn::Rebind<uint32_t, decltype(du)> d32;
   const size_t N = hn::Lanes(du);
+  // Vectors of the output planes go straight to memory (no read of the lines they replace) when
+  // they are whole vectors of 16 bytes or more and the rows are aligned to them, as tile rows of
+  // a cache-aligned VisibilityBuffer are (partial vectors store with plain stores).
+  const size_t out_bytes = N * sizeof(float);
+  const bool stream = out_bytes >= 16 && reinterpret_cast<uintptr_t>(out_depth) % out_bytes == 0 &&
+                      reinterpret_cast<uintptr_t>(out_instance) % out_bytes == 0 &&
+                      reinterpret_cast<uintptr_t>(out_triangle) % out_bytes == 0;
   size_t i = 0;
   for (; i + N <= n; i += N) {
     const auto k = hn::LoadU(du, key + i);
     const auto hit = hn::Ne(k, hn::Set(du, kNoKey));
-    hn::StoreU(hn::DemoteTo(df, hn::IfThenElseZero(hn::RebindMask(dd, hit), hn::LoadU(dd, depth + i))), df, out_depth + i);
-    hn::StoreU(hn::TruncateTo(d32, hn::ShiftRight<32>(k)), d32, out_instance + i);
-    hn::StoreU(hn::TruncateTo(d32, hn::IfThenElseZero(hit, k)), d32, out_triangle + i);
+    const auto d = hn::DemoteTo(df, hn::IfThenElseZero(hn::RebindMask(dd, hit), hn::LoadU(dd, depth + i)));
+    const auto instance = hn::TruncateTo(d32, hn::ShiftRight<32>(k));
+    const auto triangle = hn::TruncateTo(d32, hn::IfThenElseZero(hit, k));
+    if (stream) {
+      hn::Stream(d, df, out_depth + i);
+      hn::Stream(instance, d32, out_instance + i);
+      hn::Stream(triangle, d32, out_triangle + i);
+    } else {
+      hn::StoreU(d, df, out_depth + i);
+      hn::StoreU(instance, d32, out_instance + i);
+      hn::StoreU(triangle, d32, out_triangle + i);
+    }
   }
   for (; i < n; ++i) {
     const bool hit = key[i] != kNoKey;

@@ -6,6 +6,8 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include "hwy/cache_control.h"
+
 #include "render/raster_conventions.hpp"
 
 namespace silva::render {
@@ -20,6 +22,7 @@ void write_tile(const TileJob& job, const TileScratch& s, VisibilityBuffer& out)
     split_winners(s.depth.data() + src, s.key.data() + src, size_t(job.w), out.depth.data() + dst,
                   out.instance.data() + dst, out.triangle.data() + dst);
   }
+  hwy::FlushStream();  // split_winners' streamed stores are ordered before anything after
 }
 
 }  // namespace

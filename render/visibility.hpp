@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include <tbb/cache_aligned_allocator.h>
 #include <tbb/enumerable_thread_specific.h>
 
 #include "render/bin.hpp"
@@ -16,9 +17,12 @@ namespace silva::render {
 struct VisibilityBuffer {
   int width = 0;                   ///< Pixels across.
   int height = 0;                  ///< Pixels down.
-  std::vector<float> depth;        ///< Reverse depth d of the winner (1/z or -z); 0 where no hit.
-  std::vector<uint32_t> instance;  ///< Scene instance index of the winner, kNoInstance where no hit.
-  std::vector<uint32_t> triangle;  ///< Triangle index within the instance's drawn LOD mesh.
+  /// A plane of per-pixel values, cache-line aligned so that whole tile rows stream to memory.
+  template <class T>
+  using Plane = std::vector<T, tbb::cache_aligned_allocator<T>>;
+  Plane<float> depth;        ///< Reverse depth d of the winner (1/z or -z); 0 where no hit.
+  Plane<uint32_t> instance;  ///< Scene instance index of the winner, kNoInstance where no hit.
+  Plane<uint32_t> triangle;  ///< Triangle index within the instance's drawn LOD mesh.
   /// Sizes the planes for w x h (contents undefined until a pass writes them).
   void resize(int w, int h);
   /// Number of pixels.
