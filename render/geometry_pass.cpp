@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include "core/error.hpp"
 #include "render/item_placement.hpp"
@@ -152,15 +154,15 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
 
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items) {
   items.clear();
-  std::vector<uint32_t> order;
+  // Front to back (ties by index), so the early depth test rejects more; the result never depends
+  // on this order. Sorted as (nearness, index) pairs (no indirection in the comparisons, and a
+  // total order, so the parallel sort's result is the same for any thread count).
+  std::vector<std::pair<double, uint32_t>> order;
   for (uint32_t i = 0; i < uint32_t(scene.instances.size()); ++i)
-    if (selection.lod[i] != kCulled) order.push_back(i);
-  // Front to back, so the early depth test rejects more; the result never depends on this order.
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-    return selection.nearness[a] != selection.nearness[b] ? selection.nearness[a] < selection.nearness[b] : a < b;
-  });
+    if (selection.lod[i] != kCulled) order.emplace_back(selection.nearness[i], i);
+  tbb::parallel_sort(order.begin(), order.end());
   uint64_t triangles = 0;
-  for (uint32_t i : order) {
+  for (const auto& [nearness, i] : order) {
     const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[selection.lod[i]];
     const uint32_t n = uint32_t(mesh.triangle_count());
     triangles += n;
