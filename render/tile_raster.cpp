@@ -243,7 +243,7 @@ uint64_t open_blocks(const BinEntry& e, const TileSource& src, const TileJob& jo
   uint64_t open = 0;
   for (int bx = e.x0 / kDepthBlockSize; bx <= bx_last; bx += N) {
     const auto stored_min = hn::LoadU(d, bmin + bx);
-    auto m = hn::And(hn::FirstN(d, size_t(bx_last - bx + 1)), hn::Ge(hn::Set(d, e.depth_max), stored_min));
+    auto m = hn::And(hn::FirstN(d, size_t(bx_last - bx) + 1), hn::Ge(hn::Set(d, e.depth_max), stored_min));
     if (hn::AllFalse(d, m)) continue;
     if (t == nullptr) t = &src.tris[e.index];
     const auto left = hn::Mul(hn::Add(hn::Set(d, double(bx)), hn::Iota(d, 0.0)), hn::Set(d, double(kDepthBlockSize)));
