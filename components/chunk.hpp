@@ -33,7 +33,7 @@ struct ChunkStats {
 struct ChunkContent {
   ChunkCoord coord;                 ///< Chunk (i, j).
   Mesh terrain;                     ///< Terrain mesh in world coordinates (role Ground).
-  Mesh terrain_lod;                 ///< Coarse terrain level (build_terrain_lod; empty if none).
+  Mesh terrain_lod;                 ///< Coarse terrain level for drawing: built by ChunkCache, empty otherwise.
   Mesh trail;                       ///< Trail piece in world coordinates (empty if none crosses).
   std::vector<Vegetation> objects;  ///< Final objects in (grid point, sub) order.
   ChunkStats stats;                 ///< Counters and timings.
@@ -49,9 +49,8 @@ struct Chunk {
 /// Generate phase output: the chunk's terrain and trail meshes.
 struct ChunkTerrain {
   Mesh terrain;          ///< Terrain mesh in world coordinates (role Ground).
-  Mesh terrain_lod;      ///< Coarse terrain level (build_terrain_lod; empty if none).
   Mesh trail;            ///< Trail piece in world coordinates (empty if none crosses).
-  double generate_s = 0; ///< Time spent building the meshes (terrain levels included).
+  double generate_s = 0; ///< Time spent building both meshes.
   bool ready = false;    ///< True once generated.
 };
 

@@ -12,7 +12,8 @@
 
 namespace silva::world {
 
-/// LRU cache of chunk contents keyed by chunk coordinates.
+/// LRU cache of chunk contents keyed by chunk coordinates, as the renderer draws them: each with
+/// its terrain's coarse level (ChunkContent::terrain_lod).
 class ChunkCache {
  public:
   /// Cache holding at most `capacity` chunks after each require() (more only while one

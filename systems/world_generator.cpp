@@ -7,7 +7,6 @@
 
 #include "core/error.hpp"
 #include "core/instance_id.hpp"
-#include "systems/terrain_lod.hpp"
 
 namespace silva::world {
 
@@ -35,7 +34,6 @@ ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord) {
   const auto t0 = std::chrono::steady_clock::now();
   ChunkTerrain out;
   out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
-  out.terrain_lod = build_terrain_lod(out.terrain);
   out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
   out.generate_s = since(t0);
   out.ready = true;
@@ -67,7 +65,6 @@ ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjec
   ChunkContent out;
   out.coord = coord;
   out.terrain = std::move(terrain.terrain);
-  out.terrain_lod = std::move(terrain.terrain_lod);
   out.trail = std::move(terrain.trail);
   out.objects = std::move(objects.objects);
   out.stats = objects.stats;

@@ -4,6 +4,7 @@
 
 #include "core/camera.hpp"
 #include "systems/chunk_regions.hpp"
+#include "systems/terrain_lod.hpp"
 #include "systems/world_build.hpp"
 #include "systems/world_generator.hpp"
 #include "test_library.hpp"
@@ -25,8 +26,12 @@ TEST(ChunkCache, LruEvictsLeastRecentlyUsed) {
   const auto got = cache.require(ctx, {{5, 5}, {6, 5}, {7, 5}});
   EXPECT_EQ(got.size(), 3u);
   EXPECT_EQ(cache.size(), 3u);
-  // Cached content equals a fresh generation.
-  EXPECT_EQ(chunk_hash(*cache.find({6, 5})), chunk_hash(generate_chunk(ctx, {6, 5})));
+  // Cached content equals a fresh generation, plus the terrain's coarse level for drawing.
+  const ChunkContent fresh = generate_chunk(ctx, {6, 5});
+  EXPECT_EQ(chunk_hash(*cache.find({6, 5})), chunk_hash(fresh));
+  EXPECT_TRUE(fresh.terrain_lod.indices.empty());
+  EXPECT_EQ(cache.find({6, 5})->terrain_lod.indices, build_terrain_lod(fresh.terrain).indices);
+  EXPECT_GT(cache.find({6, 5})->terrain_lod.triangle_count(), 0u);
 }
 
 TEST(ChunkCache, WalkingTheTrailKeepsLiveChunksBounded) {
