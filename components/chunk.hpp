@@ -34,6 +34,7 @@ struct ChunkContent {
   ChunkCoord coord;                 ///< Chunk (i, j).
   Mesh terrain;                     ///< Terrain mesh in world coordinates (role Ground).
   Mesh terrain_lod;                 ///< Coarse terrain level for drawing: built by ChunkCache, empty otherwise.
+  AABB terrain_bounds;              ///< Bounds of terrain (terrain_lod uses its vertices): set by ChunkCache, else empty.
   Mesh trail;                       ///< Trail piece in world coordinates (empty if none crosses).
   std::vector<Vegetation> objects;  ///< Final objects in (grid point, sub) order.
   ChunkStats stats;                 ///< Counters and timings.

@@ -118,7 +118,6 @@ size_t write_winners(D d, const RasterTri& t, V depth, M win, M tie, double* dp,
   return size_t(write_lanes_scalar(t, dv, win_bits, tie_bits, hn::Lanes(d), dp, kp));
 }
 
-
 /// Offset of tile pixel (x, y) in the tile planes.
 size_t plane_offset(const TileJob& job, int x, int y) { return size_t(y) * size_t(job.stride) + size_t(x); }
 

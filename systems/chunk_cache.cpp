@@ -12,12 +12,14 @@ namespace silva::world {
 
 namespace {
 
-/// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level (built here,
-/// for the chunks that are drawn, rather than in every world generation; timed in generate_s).
+/// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level and bounds
+/// (made here, once per chunk that is drawn, rather than in every world generation or every
+/// frame; timed in generate_s).
 ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord) {
   ChunkContent c = generate_chunk(ctx, coord);
   const auto t0 = std::chrono::steady_clock::now();
   c.terrain_lod = build_terrain_lod(c.terrain);
+  c.terrain_bounds = c.terrain.bounds();
   c.stats.generate_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return c;
 }

@@ -13,7 +13,7 @@
 namespace silva::world {
 
 /// LRU cache of chunk contents keyed by chunk coordinates, as the renderer draws them: each with
-/// its terrain's coarse level (ChunkContent::terrain_lod).
+/// its terrain's coarse level and bounds (ChunkContent::terrain_lod, terrain_bounds).
 class ChunkCache {
  public:
   /// Cache holding at most `capacity` chunks after each require() (more only while one

@@ -32,8 +32,8 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
   size_t objects = 0;
   for (const auto& c : chunks) objects += c->objects.size();
   scene.instances.reserve(objects + 2 * chunks.size());
-  // Bounds cached once here: the renderer would otherwise scan these large meshes every pass.
-  auto add_world_mesh = [&](const Mesh& mesh, const Mesh* coarse) {
+  // `bounds`: cached with the chunk, or empty for the renderer to compute each pass.
+  auto add_world_mesh = [&](const Mesh& mesh, const Mesh* coarse, const AABB& bounds) {
     if (mesh.indices.empty()) return;
     render::MeshLods lods;
     lods.lods.push_back(&mesh);
@@ -41,15 +41,15 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
       lods.lods.push_back(coarse);
       lods.lod_screen_sizes.push_back(kTerrainLodScreenSize);
     }
-    lods.compute_bounds();
+    lods.bounds = bounds;
     scene.meshes.push_back(std::move(lods));
     render::Instance inst;
     inst.mesh = uint32_t(scene.meshes.size() - 1);
     scene.instances.push_back(inst);
   };
   for (const auto& c : chunks) {
-    add_world_mesh(c->terrain, &c->terrain_lod);
-    add_world_mesh(c->trail, nullptr);
+    add_world_mesh(c->terrain, &c->terrain_lod, c->terrain_bounds);
+    add_world_mesh(c->trail, nullptr, AABB{});
     for (const Vegetation& v : c->objects) {
       render::Instance inst;
       inst.object_to_world = object_to_world(v.position, v.yaw, v.scale);

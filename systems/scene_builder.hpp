@@ -16,7 +16,8 @@ struct FrameScene {
 };
 
 /// Builds frame scenes; asset meshes come first (mesh index = asset index), then per-chunk
-/// terrain (with its coarse level as LOD 1) and trail meshes. Stuff (terrain, trail, grass, ferns) has instance id 0.
+/// terrain (with its coarse level as LOD 1) and trail meshes. Stuff (terrain, trail, grass,
+/// ferns) has instance id 0.
 class SceneBuilder {
  public:
   /// Registers every asset's LODs as drawable meshes.

@@ -32,6 +32,9 @@ TEST(ChunkCache, LruEvictsLeastRecentlyUsed) {
   EXPECT_TRUE(fresh.terrain_lod.indices.empty());
   EXPECT_EQ(cache.find({6, 5})->terrain_lod.indices, build_terrain_lod(fresh.terrain).indices);
   EXPECT_GT(cache.find({6, 5})->terrain_lod.triangle_count(), 0u);
+  EXPECT_EQ(cache.find({6, 5})->terrain_bounds.min, fresh.terrain.bounds().min);
+  EXPECT_EQ(cache.find({6, 5})->terrain_bounds.max, fresh.terrain.bounds().max);
+  EXPECT_TRUE(fresh.terrain_bounds.empty());
 }
 
 TEST(ChunkCache, WalkingTheTrailKeepsLiveChunksBounded) {
