@@ -1,5 +1,5 @@
 #pragma once
-/// @file Binning: screen tiles and the per-worker lists of triangles touching each tile.
+/// @file Binning: screen tiles and, per run of draw items, the lists of triangles touching each tile.
 #include <cstdint>
 #include <vector>
 
@@ -25,8 +25,8 @@ struct TileGrid {
   int count() const { return tiles_x * tiles_y; }
 };
 
-/// One worker's set-up triangles and, per tile, entries of those that touch it.
-/// Lives in thread-local storage and keeps its capacity from frame to frame.
+/// One run of draw items' set-up triangles and, per tile, entries of those that touch it.
+/// Keeps its capacity from frame to frame.
 struct GeometryStore {
   std::vector<RasterTri> tris;              ///< Set-up screen triangles.
   std::vector<AlphaAttrib> alphas;          ///< Alpha-test data referenced by tris.

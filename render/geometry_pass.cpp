@@ -7,6 +7,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
 #include "core/error.hpp"
 #include "render/item_placement.hpp"
@@ -150,6 +152,22 @@ void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item,
   }
 }
 
+/// Boundaries of at most `chunks` runs of consecutive items with about equal triangle counts:
+/// run c is items [cuts[c], cuts[c + 1]); no run is empty (one run, empty, when there are no items).
+std::vector<size_t> chunk_cuts(std::span<const DrawItem> items, size_t chunks) {
+  uint64_t total = 0;
+  for (const DrawItem& item : items) total += item.triangle_count;
+  std::vector<size_t> cuts{0};
+  uint64_t done = 0;
+  for (size_t i = 0; i < items.size(); ++i) {
+    done += items[i].triangle_count;
+    // Cut after item i once the run reaches its share of the triangles (total * k / chunks).
+    if (i + 1 < items.size() && done * chunks >= total * cuts.size()) cuts.push_back(i + 1);
+  }
+  cuts.push_back(items.size());
+  return cuts;
+}
+
 }  // namespace
 
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items) {
@@ -177,12 +195,18 @@ void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<cons
                        const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores) {
   for (uint32_t i = 0; i < scene.meshes.size(); ++i)
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
-  for (GeometryStore& s : stores) s.reset(grid.count());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, items.size()), [&](const tbb::blocked_range<size_t>& r) {
-    GeometryStore& store = stores.local();  // a thread-id lookup: once per range, not per item
-    if (store.bins.size() != size_t(grid.count())) store.reset(grid.count());
-    for (size_t i = r.begin(); i != r.end(); ++i) process_item(scene, view, items[i], cull_back, masks, grid, store);
-  });
+  const std::vector<size_t> cuts = chunk_cuts(items, size_t(tbb::this_task_arena::max_concurrency()) * kChunksPerThread);
+  stores.resize(cuts.size() - 1);
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, stores.size(), 1),
+      [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t c = r.begin(); c != r.end(); ++c) {
+          GeometryStore& store = stores[c];
+          store.reset(grid.count());
+          for (size_t i = cuts[c]; i != cuts[c + 1]; ++i) process_item(scene, view, items[i], cull_back, masks, grid, store);
+        }
+      },
+      tbb::simple_partitioner());
 }
 
 }  // namespace silva::render

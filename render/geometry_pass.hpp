@@ -4,8 +4,6 @@
 #include <span>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
-
 #include "render/alpha_bits.hpp"
 #include "render/bin.hpp"
 #include "render/instance_cull.hpp"
@@ -26,17 +24,23 @@ struct DrawItem {
   bool inside_view = false;     ///< The instance lies inside the view (no per-triangle frustum/clip tests).
 };
 
-/// Thread-local geometry stores, reused across frames.
-using GeometryStoreSet = tbb::enumerable_thread_specific<GeometryStore>;
+/// Geometry stores of a pass, one per chunk of consecutive draw items, in draw order; reused
+/// across frames.
+using GeometryStoreSet = std::vector<GeometryStore>;
+
+/// Chunks the geometry pass cuts the items into per worker thread (load balance).
+inline constexpr size_t kChunksPerThread = 8;
 
 /// Splits every drawn instance (lod != kCulled), nearest first, into items of at most kTrianglesPerItem
 /// triangles; returns the number of triangles submitted.
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items);
 
-/// Transforms, culls, clips, sets up and bins every item's triangles in parallel into the
-/// calling threads' stores (each reset for `grid` first); masked parts take their bits from
-/// `masks` (updated for this scene). Throws InputError for a mesh whose indices, normals or uvs
-/// do not match its positions.
+/// Transforms, culls, clips, sets up and bins every item's triangles into `stores`, resized to
+/// one store per chunk of consecutive items (kChunksPerThread per worker of the current arena, cut
+/// at equal submitted triangle counts) and each reset for `grid`; chunks run in parallel, each in
+/// item order, so reading the stores in order visits every tile's triangles in draw order for any
+/// thread count. Masked parts take their bits from `masks` (updated for this scene). Throws
+/// InputError for a mesh whose indices, normals or uvs do not match its positions.
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
                        const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores);
 

@@ -38,7 +38,7 @@ struct Renderer::Impl {
   std::vector<BoundingSphere> spheres;         ///< Per mesh, this pass.
   std::vector<DrawItem> items;                 ///< Geometry tasks, this pass.
   AlphaBitsCache masks;                        ///< Opacity bits of the scene's alpha masks.
-  GeometryStoreSet stores;                     ///< Thread-local set-up triangles and bins.
+  GeometryStoreSet stores;                     ///< Set-up triangles and bins, per chunk of items.
   TileScratchSet tile_scratch;                 ///< Thread-local tile planes.
   std::vector<const GeometryStore*> store_list;  ///< Stores of this pass.
   PassState camera;                            ///< Camera pass results.

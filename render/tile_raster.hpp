@@ -9,11 +9,11 @@
 
 namespace silva::render {
 
-/// The triangles one worker binned to a tile.
+/// The triangles one geometry store (run of draw items) binned to a tile.
 struct TileSource {
-  const RasterTri* tris = nullptr;      ///< The worker's triangles.
-  const AlphaAttrib* alphas = nullptr;  ///< The worker's alpha data.
-  const BinEntry* entries = nullptr;    ///< The worker's bin of this tile (entries index tris).
+  const RasterTri* tris = nullptr;      ///< The store's triangles.
+  const AlphaAttrib* alphas = nullptr;  ///< The store's alpha data.
+  const BinEntry* entries = nullptr;    ///< The store's bin of this tile (entries index tris).
   size_t count = 0;                     ///< Number of entries.
 };
 
