@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <string>
-#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
@@ -172,15 +170,10 @@ std::vector<size_t> chunk_cuts(std::span<const DrawItem> items, size_t chunks) {
 
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items) {
   items.clear();
-  // Front to back (ties by index), so the early depth test rejects more; the result never depends
-  // on this order. Sorted as (nearness, index) pairs (no indirection in the comparisons, and a
-  // total order, so the parallel sort's result is the same for any thread count).
-  std::vector<std::pair<double, uint32_t>> order;
-  for (uint32_t i = 0; i < uint32_t(scene.instances.size()); ++i)
-    if (selection.lod[i] != kCulled) order.emplace_back(selection.nearness[i], i);
-  tbb::parallel_sort(order.begin(), order.end());
+  // Front to back (selection.order), so the early depth test rejects more; the result never
+  // depends on this order.
   uint64_t triangles = 0;
-  for (const auto& [nearness, i] : order) {
+  for (const uint32_t i : selection.order) {
     const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[selection.lod[i]];
     const uint32_t n = uint32_t(mesh.triangle_count());
     triangles += n;

@@ -31,7 +31,7 @@ using GeometryStoreSet = std::vector<GeometryStore>;
 /// Chunks the geometry pass cuts the items into per worker thread (load balance).
 inline constexpr size_t kChunksPerThread = 8;
 
-/// Splits every drawn instance (lod != kCulled), nearest first, into items of at most kTrianglesPerItem
+/// Splits the drawn instances, in selection.order (nearest first), into items of at most kTrianglesPerItem
 /// triangles; returns the number of triangles submitted.
 uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection, std::vector<DrawItem>& items);
 

@@ -27,10 +27,11 @@ struct InstanceSelection {
   std::vector<uint8_t> inside;   ///< 1 when the sphere lies well inside every frustum plane (its
                                  ///< triangles skip the per-triangle frustum and clip tests), else 0.
   std::vector<double> nearness;  ///< Depth of the sphere's nearest point along the view (draw order key).
+  std::vector<uint32_t> order;   ///< Drawn instances, nearest first by float(nearness), ties by index.
 };
 
-/// Culls and picks LODs of every instance by its bounding sphere. Throws InputError for an
-/// instance naming a missing mesh.
+/// Culls and picks LODs of every instance by its bounding sphere, and orders the drawn ones
+/// nearest first. Throws InputError for an instance naming a missing mesh.
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
                       bool lod, InstanceSelection& out);
 

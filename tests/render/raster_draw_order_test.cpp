@@ -29,6 +29,7 @@ TEST(RasterDrawOrder, ItemsRunNearestFirstAndSkipCulledInstances) {
   s.add_instance(card, place(Vec3f(10, 0, 1)));   // 1: near
   s.add_instance(card, place(Vec3f(20, 0, 1)));   // 2: middle
   s.add_instance(card, place(Vec3f(-20, 0, 1)));  // 3: behind the camera
+  s.add_instance(card, place(Vec3f(0.2f, 0, 1)));  // 4: its sphere holds the camera (negative nearness)
   const Camera cam = test::test_camera(64, 48, 0);
   const ViewProjection view = ViewProjection::from_camera(cam);
   std::vector<BoundingSphere> spheres;
@@ -36,12 +37,15 @@ TEST(RasterDrawOrder, ItemsRunNearestFirstAndSkipCulledInstances) {
   InstanceSelection sel;
   select_instances(s.scene, view, spheres, false, sel);
   EXPECT_EQ(sel.lod[3], kCulled);
+  ASSERT_LT(sel.nearness[4], 0.0);
+  EXPECT_EQ(sel.order, (std::vector<uint32_t>{4, 1, 2, 0}));
   std::vector<DrawItem> items;
-  EXPECT_EQ(build_draw_items(s.scene, sel, items), 6u);  // three drawn cards of 2 triangles
-  ASSERT_EQ(items.size(), 3u);
-  EXPECT_EQ(items[0].instance, 1u);
-  EXPECT_EQ(items[1].instance, 2u);
-  EXPECT_EQ(items[2].instance, 0u);
+  EXPECT_EQ(build_draw_items(s.scene, sel, items), 8u);  // four drawn cards of 2 triangles
+  ASSERT_EQ(items.size(), 4u);
+  EXPECT_EQ(items[0].instance, 4u);
+  EXPECT_EQ(items[1].instance, 1u);
+  EXPECT_EQ(items[2].instance, 2u);
+  EXPECT_EQ(items[3].instance, 0u);
 }
 
 TEST(RasterDrawOrder, InsideFlagOnlyForSpheresClearOfEveryPlane) {
