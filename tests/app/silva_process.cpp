@@ -1,5 +1,7 @@
 #include "silva_process.hpp"
 
+#include "tests/common/scratch_dirs.hpp"
+
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -94,6 +96,7 @@ fs::path fresh_test_dir() {
                         std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  remove_when_passed(dir);
   return dir;
 }
 

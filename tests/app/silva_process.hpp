@@ -51,7 +51,8 @@ inline constexpr const char* kLabelTypes = R"(["semantic","instance","depth","de
 /// + 2 random poses, a 128 m world, far plane 40 m, the given output types (a TOML list).
 std::vector<std::string> tiny_run_args(const std::filesystem::path& out, int64_t seed, const char* types = kLabelTypes);
 
-/// A fresh, empty scratch folder for the running test (under ::testing::TempDir()).
+/// A fresh, empty scratch folder for the running test (under ::testing::TempDir()), removed at
+/// the end of a test program whose tests all passed.
 std::filesystem::path fresh_test_dir();
 
 /// Reads a whole file ("" when it cannot be read).

@@ -13,14 +13,17 @@
 #include "core/instance_id.hpp"
 #include "io/atomic_file.hpp"
 #include "render/gbuffer.hpp"
+#include "tests/common/scratch_dirs.hpp"
 
 namespace silva::io::test {
 
-/// A fresh, empty scratch folder named after the running test (removed and recreated).
+/// A fresh, empty scratch folder named after the running test (removed and recreated; removed
+/// again at the end of a test program whose tests all passed).
 inline std::filesystem::path scratch_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("silva_io_test_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
+  silva::test::remove_when_passed(dir);
   return dir;
 }
 
