@@ -200,8 +200,8 @@ uint64_t raster_masked_rows(D d, const RasterTri& t, const AlphaAttrib& alpha, c
 /// Rasterises triangle `t` into the part [x_first, x_last] x [y_begin, y_end] (tile-local) of
 /// one 8x8 block, which open_blocks let through. Edge values step down the rows by exact
 /// additions (integer-valued doubles). Returns true when it wrote a pixel.
-bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
-                  TileCounters& counters, int x_first, int x_last, int y_begin, int y_end) {
+HWY_INLINE bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& job, TileScratch& s,
+                             TileCounters& counters, int x_first, int x_last, int y_begin, int y_end) {
   const DTag d;
   const int N = int(hn::Lanes(d));
   const double b0 = t.edge[0].b(), b1 = t.edge[1].b(), b2 = t.edge[2].b();
@@ -233,8 +233,8 @@ bool raster_block(const RasterTri& t, const AlphaAttrib* alpha, const TileJob& j
 /// part's corner its slopes point to (the plane's computed values are monotone in x and y, so
 /// that corner holds the largest depth of the part) against the block's minimum, and each edge at
 /// the corner its gradient points to (exact). bmin must be readable up to a vector past the row.
-uint64_t open_blocks(const BinEntry& e, const TileSource& src, const TileJob& job, const double* bmin, int y_begin,
-                     int y_end, const RasterTri*& t) {
+HWY_INLINE uint64_t open_blocks(const BinEntry& e, const TileSource& src, const TileJob& job, const double* bmin,
+                                int y_begin, int y_end, const RasterTri*& t) {
   const DTag d;
   const int N = int(hn::Lanes(d));
   const double iy0 = double(job.y0 + y_begin), iy1 = double(job.y0 + y_end);
@@ -268,6 +268,8 @@ size_t block_index(const TileJob& job, int bx, int by) {
 
 /// Rasterises one bin entry into the 8x8 blocks of the tile it overlaps, skipping the blocks
 /// open_blocks rules out; its RasterTri is only read when a block passes the entry's depth bound.
+/// open_blocks and raster_block are forced inline into it: they run per block row and per block
+/// (half a million times a frame), and inlined they keep the entry's values in registers.
 void raster_entry(const BinEntry& e, const TileSource& src, const TileJob& job, TileScratch& s,
                   TileCounters& counters) {
   static_assert(256 / kDepthBlockSize <= 64, "a tile row's blocks fit one 64-bit set");
