@@ -44,7 +44,8 @@ struct GeometryStore {
   }
 
  private:
-  /// bin() for a triangle whose bounds span several tiles: each tile it may cover.
+  /// bin() for a triangle whose bounds span several tiles: each tile where every edge is >= 0
+  /// somewhere on the part of the tile inside the bounds (at the corner its gradient points to).
   void bin_across_tiles(uint32_t index, const TriBounds& bounds, const TileGrid& grid);
   /// Appends tris[index] to tile (tx, ty)'s bin with candidate pixels [x0, x1] x [y0, y1] (image
   /// coordinates inside that tile).

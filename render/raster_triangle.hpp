@@ -24,9 +24,6 @@ struct EdgeFunction {
   double b() const { return double(kSubpixelScale) * double(dx); }
   /// E at pixel (x, y)'s centre.
   double at(double x, double y) const { return (c + b() * y) + a() * x; }
-  /// Largest E over the pixel rectangle [x0, x1] x [y0, y1]: its value at the corner the
-  /// gradient points to.
-  double max_over(int x0, int y0, int x1, int y1) const { return at(dy <= 0 ? x1 : x0, dx >= 0 ? y1 : y0); }
 };
 
 /// One screen triangle with A > 0 (raster_conventions.hpp), as the tile rasteriser reads it.
