@@ -72,7 +72,7 @@ struct Renderer::Impl {
     }
     stats->fragments_covered = tc.fragments;
     stats->pixels_shaded_or_written = tc.writes;
-    for (uint32_t inst : state.vis.instance) stats->pixels_covered += inst != kNoInstance ? 1 : 0;
+    stats->pixels_covered = tc.covered;
   }
 };
 

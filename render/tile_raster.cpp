@@ -322,8 +322,8 @@ void RasteriseTileImpl(const TileJob& job, const TileSource* sources, size_t sou
 static_assert(uint32_t(kNoKey >> 32) == kNoInstance, "an empty key splits into kNoInstance");
 
 /// split_winners for one target (the scalar tail does the same per pixel).
-void SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
-                      uint32_t* out_triangle) {
+size_t SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+                        uint32_t* out_triangle) {
   const hn::ScalableTag<uint64_t> du;
   const hn::RebindToFloat<decltype(du)> dd;
   const hn::Rebind<float, decltype(dd)> df;
@@ -336,10 +336,11 @@ void SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float*
   const bool stream = out_bytes >= 16 && reinterpret_cast<uintptr_t>(out_depth) % out_bytes == 0 &&
                       reinterpret_cast<uintptr_t>(out_instance) % out_bytes == 0 &&
                       reinterpret_cast<uintptr_t>(out_triangle) % out_bytes == 0;
-  size_t i = 0;
+  size_t i = 0, hits = 0;
   for (; i + N <= n; i += N) {
     const auto k = hn::LoadU(du, key + i);
     const auto hit = hn::Ne(k, hn::Set(du, kNoKey));
+    hits += hn::CountTrue(du, hit);
     const auto d = hn::DemoteTo(df, hn::IfThenElseZero(hn::RebindMask(dd, hit), hn::LoadU(dd, depth + i)));
     const auto instance = hn::TruncateTo(d32, hn::ShiftRight<32>(k));
     const auto triangle = hn::TruncateTo(d32, hn::IfThenElseZero(hit, k));
@@ -355,10 +356,12 @@ void SplitWinnersImpl(const double* depth, const uint64_t* key, size_t n, float*
   }
   for (; i < n; ++i) {
     const bool hit = key[i] != kNoKey;
+    hits += hit ? 1 : 0;
     out_depth[i] = hit ? float(depth[i]) : 0.0f;
     out_instance[i] = uint32_t(key[i] >> 32);
     out_triangle[i] = hit ? uint32_t(key[i]) : 0u;
   }
+  return hits;
 }
 
 /// The target this copy of the kernel was compiled for.
@@ -379,9 +382,9 @@ void rasterise_tile(const TileJob& job, std::span<const TileSource> sources, Til
   HWY_DYNAMIC_DISPATCH(RasteriseTileImpl)(job, sources.data(), sources.size(), scratch, counters);
 }
 
-void split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
-                   uint32_t* out_triangle) {
-  HWY_DYNAMIC_DISPATCH(SplitWinnersImpl)(depth, key, n, out_depth, out_instance, out_triangle);
+size_t split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+                     uint32_t* out_triangle) {
+  return HWY_DYNAMIC_DISPATCH(SplitWinnersImpl)(depth, key, n, out_depth, out_instance, out_triangle);
 }
 
 int64_t raster_simd_target() { return HWY_DYNAMIC_DISPATCH(ActiveTargetImpl)(); }

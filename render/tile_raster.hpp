@@ -37,6 +37,7 @@ struct TileScratch {
 struct TileCounters {
   uint64_t fragments = 0;  ///< Sample centres found inside a triangle.
   uint64_t writes = 0;     ///< Depth/key writes (overdraw included).
+  uint64_t covered = 0;    ///< Pixels with a winner once their tile is done.
 };
 
 /// Rasterises every triangle of `sources` into the tile; the winners are left in scratch.depth
@@ -47,7 +48,8 @@ void rasterise_tile(const TileJob& job, std::span<const TileSource> sources, Til
 /// Splits the winners of n pixels of a tile row into the visibility buffer's planes: reverse
 /// depth as float (0 where nothing won), instance = key >> 32 (kNoInstance where nothing won) and
 /// triangle = the key's low 32 bits (0 where nothing won). On SIMD lanes (dynamic dispatch).
-void split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
+/// Returns the number of pixels where something won.
+size_t split_winners(const double* depth, const uint64_t* key, size_t n, float* out_depth, uint32_t* out_instance,
                    uint32_t* out_triangle);
 
 /// The Highway target rasterise_tile dispatches to now (HWY_AVX2, HWY_EMU128, ...).

@@ -14,15 +14,17 @@ namespace silva::render {
 
 namespace {
 
-/// Copies a rasterised tile's winners into the visibility buffer.
-void write_tile(const TileJob& job, const TileScratch& s, VisibilityBuffer& out) {
+/// Copies a rasterised tile's winners into the visibility buffer; returns the pixels with one.
+size_t write_tile(const TileJob& job, const TileScratch& s, VisibilityBuffer& out) {
+  size_t covered = 0;
   for (int y = 0; y < job.h; ++y) {
     const size_t src = size_t(y) * size_t(job.stride);
     const size_t dst = size_t(job.y0 + y) * size_t(out.width) + size_t(job.x0);
-    split_winners(s.depth.data() + src, s.key.data() + src, size_t(job.w), out.depth.data() + dst,
+    covered += split_winners(s.depth.data() + src, s.key.data() + src, size_t(job.w), out.depth.data() + dst,
                   out.instance.data() + dst, out.triangle.data() + dst);
   }
   hwy::FlushStream();  // split_winners' streamed stores are ordered before anything after
+  return covered;
 }
 
 }  // namespace
@@ -55,13 +57,14 @@ TileCounters rasterise_tiles(const TileGrid& grid, double depth_clear, std::span
         if (!bin.empty()) s.sources.push_back(TileSource{store->tris.data(), store->alphas.data(), bin.data(), bin.size()});
       }
       rasterise_tile(job, s.sources, s, counters);
-      write_tile(job, s, out);
+      counters.covered += write_tile(job, s, out);
     }
   });
   TileCounters sum;
   totals.combine_each([&](const TileCounters& c) {
     sum.fragments += c.fragments;
     sum.writes += c.writes;
+    sum.covered += c.covered;
   });
   return sum;
 }
