@@ -1,11 +1,13 @@
 #include "render/instance_cull.hpp"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <string>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include "core/error.hpp"
 
@@ -58,15 +60,31 @@ uint32_t ordered_bits(float f) {
   return (u >> 31) != 0 ? ~u : u | 0x80000000u;
 }
 
-/// Fills sel.order: the drawn instances sorted by (float(nearness), index) as one 64-bit key each
-/// (a total order, so the parallel sort's result does not depend on the thread count).
+/// Fills sel.order: the drawn instances sorted by float(nearness), ties by index. An LSD radix
+/// sort of the ordered float bits, 8 bits a pass, each pass stable, over the instances listed in
+/// index order (so ties keep it): linear in the instance count, the same for any thread count.
 void draw_order(InstanceSelection& sel) {
-  std::vector<uint64_t> keys;
+  std::vector<uint32_t> index, key;
   for (uint32_t i = 0; i < uint32_t(sel.lod.size()); ++i)
-    if (sel.lod[i] != kCulled) keys.push_back(uint64_t(ordered_bits(float(sel.nearness[i]))) << 32 | i);
-  tbb::parallel_sort(keys.begin(), keys.end());
-  sel.order.resize(keys.size());
-  for (size_t k = 0; k < keys.size(); ++k) sel.order[k] = uint32_t(keys[k]);
+    if (sel.lod[i] != kCulled) {
+      index.push_back(i);
+      key.push_back(ordered_bits(float(sel.nearness[i])));
+    }
+  std::vector<uint32_t> index_out(index.size()), key_out(key.size());
+  for (int shift = 0; shift < 32; shift += 8) {
+    size_t start[257] = {};  // start[d + 1] counts digit d, then start[d] is where digit d goes
+    for (const uint32_t k : key) ++start[((k >> shift) & 255u) + 1];
+    if (std::find(start + 1, start + 257, key.size()) != start + 257) continue;  // one digit: no move
+    for (int d = 0; d < 256; ++d) start[d + 1] += start[d];
+    for (size_t k = 0; k < key.size(); ++k) {
+      const size_t to = start[(key[k] >> shift) & 255u]++;
+      index_out[to] = index[k];
+      key_out[to] = key[k];
+    }
+    index.swap(index_out);
+    key.swap(key_out);
+  }
+  sel.order = std::move(index);
 }
 
 }  // namespace
@@ -110,7 +128,9 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
       const BoundingSphere& s = spheres[inst.mesh];
       const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
       const Vec3d world_center = m.leftCols<3>() * s.center + m.col(3);
-      const double scale = m.leftCols<3>().colwise().norm().maxCoeff();
+      // The longest column's length: one square root of the largest squared length (the same value,
+      // as the square root is monotone and correctly rounded).
+      const double scale = std::sqrt(m.leftCols<3>().colwise().squaredNorm().maxCoeff());
       const double r_world = s.radius * scale;
       const Vec3d c = view.world_to_view.topLeftCorner<3, 3>() * world_center + view.world_to_view.block<3, 1>(0, 3);
       if (s.radius < 0.0 || !c.allFinite() || frustum.outside(c, r_world)) {
@@ -120,8 +140,9 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
         continue;
       }
       out.inside[i] = frustum.inside(c, r_world) ? 1 : 0;
-      out.nearness[i] = (view.perspective ? c.norm() : c.z()) - r_world;
-      out.lod[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, c.norm())) : 0u;
+      const double distance = c.norm();
+      out.nearness[i] = (view.perspective ? distance : c.z()) - r_world;
+      out.lod[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, distance)) : 0u;
     }
   });
   draw_order(out);
