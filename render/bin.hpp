@@ -33,7 +33,6 @@ struct GeometryStore {
   std::vector<std::vector<BinEntry>> bins;  ///< Per tile: the triangles that may cover its samples.
   SetupCounters counters;                   ///< Front-end counters.
   uint64_t bin_entries = 0;                 ///< (triangle, tile) pairs added.
-  VertexCache vertices;                     ///< Transformed vertices of the item being set up.
   /// Empties the store for a new pass over `tile_count` tiles (keeps capacity).
   void reset(int tile_count);
   /// Adds tris[index] (with its bounds) to the bins of every tile whose samples it may cover.

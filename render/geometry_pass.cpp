@@ -75,6 +75,7 @@ struct ItemContext {
   const AlphaBitsCache& masks;            ///< Opacity bits of the masks.
   const TileGrid& grid;                   ///< Tiles to bin into.
   GeometryStore& store;                   ///< Output.
+  VertexCache& vertices;                  ///< The worker's transformed vertices of the item.
 };
 
 /// Sets up and bins triangles [t_begin, t_end) of the item, whose vertices `range` covers and
@@ -90,7 +91,7 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
                      range.count > 0;
   if (lanes)
     project_vertices(c.m, c.sv.view, mesh.positions.data() + range.first, range.count,
-                     store.vertices.fill(range.first, range.count));
+                     c.vertices.fill(range.first, range.count));
   TriangleInput in;
   in.inside_view = place == Placement::Inside;
   TriBounds bounds[kMaxSetupTriangles];
@@ -101,7 +102,7 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
     in.cull_back = c.cull_back && !part.double_sided;
     if (lanes && p_begin < p_end) {
       setup_triangles_lanes(c.sv,
-                            LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, store.vertices.slots.data(),
+                            LaneTriangles{mesh.indices.data(), p_begin, p_end - p_begin, c.vertices.slots.data(),
                                           mesh.uvs.data(), in.mask, in.cull_back, uint64_t(c.item.instance) << 32,
                                           place == Placement::Unclipped},
                             c.grid, store);
@@ -114,7 +115,7 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
           throw InputError("render scene: mesh " + std::to_string(c.scene.instances[c.item.instance].mesh) +
                            " has index " + std::to_string(v) + " but only " + std::to_string(vertex_count) +
                            " vertices");
-        in.v[k] = &store.vertices.get(v, [&] { return to_view(c.m, mesh.positions[v]); });
+        in.v[k] = &c.vertices.get(v, [&] { return to_view(c.m, mesh.positions[v]); });
         if (in.mask) in.uv[k] = &mesh.uvs[v];
       }
       in.key = (uint64_t(c.item.instance) << 32) | t;
@@ -125,17 +126,18 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
   }
 }
 
-/// Sets up and bins the triangles of one item into `store`. An item of an instance that straddles
+/// Sets up and bins the triangles of one item into `store`, transforming its vertices into the
+/// worker's `vertices`. An item of an instance that straddles
 /// the view is placed run by run (kPlacementRun triangles): runs wholly outside are dropped (each
 /// of their triangles would fail the same frustum plane), runs that need no clipping go to the
 /// SIMD setup.
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
-                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store) {
+                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store, VertexCache& vertices) {
   const Instance& inst = scene.instances[item.instance];
   const ItemContext c{scene, sv, item, *scene.meshes[inst.mesh].lods[item.lod], object_to_view(inst, sv.view),
-                      cull_back, masks, grid, store};
+                      cull_back, masks, grid, store, vertices};
   const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
-  store.vertices.begin_item(c.mesh.positions.size());
+  c.vertices.begin_item(c.mesh.positions.size());
   if (item.inside_view) {
     process_run(c, t_begin, t_end, item_vertex_range(c.mesh, t_begin, t_end), Placement::Inside);
     return;
@@ -185,7 +187,8 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 }
 
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores) {
+                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
+                       VertexCacheSet& caches) {
   for (uint32_t i = 0; i < scene.meshes.size(); ++i)
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
   const std::vector<size_t> cuts = chunk_cuts(items, size_t(tbb::this_task_arena::max_concurrency()) * kChunksPerThread);
@@ -195,8 +198,10 @@ void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<cons
       [&](const tbb::blocked_range<size_t>& r) {
         for (size_t c = r.begin(); c != r.end(); ++c) {
           GeometryStore& store = stores[c];
+          VertexCache& vertices = caches.local();
           store.reset(grid.count());
-          for (size_t i = cuts[c]; i != cuts[c + 1]; ++i) process_item(scene, view, items[i], cull_back, masks, grid, store);
+          for (size_t i = cuts[c]; i != cuts[c + 1]; ++i)
+            process_item(scene, view, items[i], cull_back, masks, grid, store, vertices);
         }
       },
       tbb::simple_partitioner());

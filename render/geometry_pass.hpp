@@ -4,6 +4,8 @@
 #include <span>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "render/alpha_bits.hpp"
 #include "render/bin.hpp"
 #include "render/instance_cull.hpp"
@@ -28,6 +30,9 @@ struct DrawItem {
 /// across frames.
 using GeometryStoreSet = std::vector<GeometryStore>;
 
+/// Per-worker transformed vertices of the item being set up (scratch, reused across frames).
+using VertexCacheSet = tbb::enumerable_thread_specific<VertexCache>;
+
 /// Chunks the geometry pass cuts the items into per worker thread (load balance).
 inline constexpr size_t kChunksPerThread = 8;
 
@@ -39,9 +44,11 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 /// one store per chunk of consecutive items (kChunksPerThread per worker of the current arena, cut
 /// at equal submitted triangle counts) and each reset for `grid`; chunks run in parallel, each in
 /// item order, so reading the stores in order visits every tile's triangles in draw order for any
-/// thread count. Masked parts take their bits from `masks` (updated for this scene). Throws
-/// InputError for a mesh whose indices, normals or uvs do not match its positions.
+/// thread count. Vertices are transformed into the calling worker's cache of `caches`. Masked parts
+/// take their bits from `masks` (updated for this scene). Throws InputError for a mesh whose
+/// indices, normals or uvs do not match its positions.
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores);
+                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
+                       VertexCacheSet& caches);
 
 }  // namespace silva::render

@@ -39,6 +39,7 @@ struct Renderer::Impl {
   std::vector<DrawItem> items;                 ///< Geometry tasks, this pass.
   AlphaBitsCache masks;                        ///< Opacity bits of the scene's alpha masks.
   GeometryStoreSet stores;                     ///< Set-up triangles and bins, per chunk of items.
+  VertexCacheSet vertex_caches;                ///< Thread-local transformed vertices of an item.
   TileScratchSet tile_scratch;                 ///< Thread-local tile planes.
   std::vector<const GeometryStore*> store_list;  ///< Stores of this pass.
   PassState camera;                            ///< Camera pass results.
@@ -54,7 +55,7 @@ struct Renderer::Impl {
     const TileGrid grid = TileGrid::make(view.width, view.height, options.tile_size);
     const SetupView setup(view);
     masks.update(scene);
-    run_geometry_pass(scene, setup, items, cull_back, masks, grid, stores);
+    run_geometry_pass(scene, setup, items, cull_back, masks, grid, stores, vertex_caches);
     store_list.clear();
     for (const GeometryStore& s : stores) store_list.push_back(&s);
     state.vis.resize(view.width, view.height);

@@ -28,7 +28,7 @@ inline Vec3d to_view(const Eigen::Matrix<double, 3, 4>& m, const Vec3f& p) {
 /// view is a perspective one) and marks it projected.
 void project_vertex(const ViewProjection& view, SetupVertex& v);
 
-/// Per-store SetupVertex slots indexed by mesh vertex, valid for the current geometry item only.
+/// Per-worker SetupVertex slots indexed by mesh vertex, valid for the current geometry item only.
 struct VertexCache {
   std::vector<SetupVertex> slots;  ///< One per mesh vertex.
   std::vector<uint32_t> stamp;     ///< Item number that last filled each slot.
