@@ -127,10 +127,9 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
 }
 
 /// Sets up and bins the triangles of one item into `store`, transforming its vertices into the
-/// worker's `vertices`. An item of an instance that straddles
-/// the view is placed run by run (kPlacementRun triangles): runs wholly outside are dropped (each
-/// of their triangles would fail the same frustum plane), runs that need no clipping go to the
-/// SIMD setup.
+/// worker's `vertices`. An item of an instance that straddles the view is placed run by run
+/// (kPlacementRun triangles): runs wholly outside are dropped (each of their triangles would fail
+/// the same frustum plane), runs that need no clipping go to the SIMD setup.
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
                   const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store, VertexCache& vertices) {
   const Instance& inst = scene.instances[item.instance];
