@@ -6,8 +6,9 @@
 #include <filesystem>
 
 #include "app/interrupt.hpp"
-#include "systems/capture_pipeline.hpp"
-#include "systems/plan_captures.hpp"
+#include "app/schedule/world_schedule.hpp"
+#include "world/chunk_cache.hpp"
+#include "world/plan_captures.hpp"
 
 namespace silva::app {
 
@@ -17,7 +18,7 @@ namespace {
 
 /// A measured capture run.
 struct CaptureRun {
-  world::CaptureStats stats;
+  systems::CaptureStats stats;
   std::vector<double> done_at_s;  ///< Seconds from the start to each completed frame.
   int width = 0, height = 0;
 };
@@ -27,24 +28,20 @@ CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::Pla
                    const std::vector<std::string>& types, int threads) {
   stop_if_interrupted();
   static int run_number = 0;
-  world::CaptureJob job;
-  job.world = &w.world;
-  job.preset = ctx.setup.preset;
-  job.ontology = ctx.setup.ontology;
-  job.outputs = io::OutputSelection::from_names(types);
-  job.run_dir = ctx.scratch / ("run-" + std::to_string(++run_number));
-  job.frames = std::move(frames);
-  job.stop = [] { return interrupt_requested(); };
+  const systems::CaptureSettings settings{ctx.setup.preset, ctx.setup.ontology, io::OutputSelection::from_names(types),
+                                          ctx.scratch / ("run-" + std::to_string(++run_number))};
   CaptureRun run;
-  run.width = job.frames.empty() ? 0 : job.frames.front().camera.width;  // frames may be planned at another size
-  run.height = job.frames.empty() ? 0 : job.frames.front().camera.height;
+  run.width = frames.empty() ? 0 : frames.front().camera.width;  // frames may be planned at another size
+  run.height = frames.empty() ? 0 : frames.front().camera.height;
   const auto t0 = std::chrono::steady_clock::now();
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    run.stats = world::run_capture(job, w.cache, [&](int, int) { run.done_at_s.push_back(seconds_since(t0)); });
+    run.stats = w.schedule->capture(
+        frames, settings, [&](int, int) { run.done_at_s.push_back(seconds_since(t0)); },
+        [] { return interrupt_requested(); });
   });
   std::error_code ec;
-  fs::remove_all(job.run_dir, ec);
+  fs::remove_all(settings.run_dir, ec);
   if (run.stats.stopped) throw Interrupted("bench interrupted");
   return run;
 }
@@ -55,7 +52,7 @@ std::vector<world::PlannedFrame> random_frames(WarmWorld& w, int count, int widt
   sized.config.captures.random_count = count;
   sized.config.output.width = width;
   sized.config.output.height = height;
-  return world::plan_random(sized, w.cache);
+  return world::plan_random(sized, w.schedule->ecs().resource<world::ChunkCache>());
 }
 
 /// `count` autopilot frames spread evenly over the whole autopilot (all of them when count is 0
@@ -81,12 +78,12 @@ Figure capture_figure(const BenchContext& ctx, const std::string& table, const s
   f.silva_s = run.stats.wall_s * scale;
   f.thesis_s = ctx.thesis.seconds(table, x);
   f.work.objects = w.objects;
-  f.work.chunks = w.cache.size();
+  f.work.chunks = w.schedule->ecs().resource<world::ChunkCache>().size();
   f.work.triangles = run.stats.triangles_submitted;
   f.work.frames = uint64_t(run.stats.frames_written);
   f.work.pixels = f.work.frames * uint64_t(run.width) * uint64_t(run.height);
   f.work.bytes = run.stats.bytes_written;
-  const world::CaptureStats& s = run.stats;
+  const systems::CaptureStats& s = run.stats;
   f.breakdown = {{"per_set", per_set},          {"wall_s", s.wall_s},       {"stream_s", s.stream_s},
                  {"prepare_s", s.prepare_s},    {"render_s", s.render_s},   {"shadow_s", s.shadow_s},
                  {"shade_s", s.shade_s},        {"encode_s", s.encode_s},   {"write_s", s.write_s},

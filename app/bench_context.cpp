@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "app/interrupt.hpp"
-#include "systems/chunk_regions.hpp"
+#include "world/chunk_regions.hpp"
 
 namespace silva::app {
 
@@ -36,10 +36,9 @@ Config bench_variant(const BenchContext& ctx, const std::vector<std::string>& se
 std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<ChunkCoord> coords = world::default_world_chunks(cfg);
-  auto w = std::unique_ptr<WarmWorld>(
-      new WarmWorld{world::make_world_context(cfg, *ctx.setup.library), world::ChunkCache(coords.size() + 16)});
-  for (const auto& chunk : w->cache.require(w->world, coords))
-    for (uint32_t n : chunk->stats.objects_by_role) w->objects += n;
+  auto w = std::unique_ptr<WarmWorld>(new WarmWorld{world::make_world_context(cfg, *ctx.setup.library), nullptr});
+  w->schedule = std::make_unique<WorldSchedule>(w->world, coords.size() + 16);
+  w->objects = w->schedule->build(coords, true).totals.objects;
   w->build_s = seconds_since(t0);
   return w;
 }

@@ -12,7 +12,7 @@
 #include "app/config_loader.hpp"
 #include "app/reporter.hpp"
 #include "app/run_setup.hpp"
-#include "systems/chunk_cache.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 namespace silva::app {
 
@@ -39,8 +39,8 @@ Config bench_variant(const BenchContext& ctx, const std::vector<std::string>& se
 
 /// A world whose every default-world chunk is generated and cached (capture figures are timed warm).
 struct WarmWorld {
-  world::WorldContext world;  ///< Context of the variant config.
-  world::ChunkCache cache;    ///< Holds the whole default world.
+  world::WorldContext world;                ///< Context of the variant config.
+  std::unique_ptr<WorldSchedule> schedule;  ///< Its chunk cache holds the whole default world.
   double build_s = 0;         ///< Time to generate it (not part of any capture figure).
   uint64_t objects = 0;       ///< Objects in the world.
 };

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "systems/world_build.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 namespace silva::app {
 
@@ -44,7 +44,7 @@ TimedBuild timed_build(const BenchContext& ctx, const Config& cfg, int threads) 
   const auto t0 = std::chrono::steady_clock::now();
   const world::WorldContext wc = world::make_world_context(cfg, *ctx.setup.library);
   const double context_s = seconds_since(t0);
-  const world::World w = world::build_default_world(wc, threads);
+  const world::BuiltWorld w = build_default_world(wc, threads);
   return {seconds_since(t0), context_s, w.totals, w.hash};
 }
 

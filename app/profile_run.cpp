@@ -9,7 +9,7 @@
 #include "app/profile_output.hpp"
 #include "app/run_setup.hpp"
 #include "io/atomic_file.hpp"
-#include "systems/chunk_regions.hpp"
+#include "world/chunk_regions.hpp"
 
 namespace silva::app {
 

@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <chrono>
 
-#include "systems/placement.hpp"
+#include "app/schedule/world_schedule.hpp"
+#include "world/placement.hpp"
 
 namespace silva::app {
 
@@ -41,7 +42,7 @@ bool is_thing(Role r) { return r != Role::GroundVegetation && r != Role::Ground 
 }  // namespace
 
 WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<ChunkCoord>& coords, int threads) {
-  const world::World w = world::build_world(ctx, coords, threads);
+  const world::BuiltWorld w = build_world(ctx, coords, threads);
   const std::vector<ChunkPlacement> placement = count_candidates(ctx, coords, threads);
   const double s = ctx.chunk_size();
   WorldProfile p;

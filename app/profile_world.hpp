@@ -6,7 +6,8 @@
 
 #include "app/profile_metrics.hpp"
 #include "core/ontology.hpp"
-#include "systems/world_build.hpp"
+#include "world/world_context.hpp"
+#include "world/world_summary.hpp"
 
 namespace silva::app {
 

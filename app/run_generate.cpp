@@ -12,8 +12,7 @@
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
-#include "systems/capture_pipeline.hpp"
-#include "systems/chunk_regions.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 namespace silva::app {
 
@@ -56,9 +55,9 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   std::vector<io::PoseEntry> poses;
   if (std::find(cfg.captures.sequences.begin(), cfg.captures.sequences.end(), "custom") != cfg.captures.sequences.end())
     poses = io::read_pose_file(cfg.captures.poses_file);
-  world::ChunkCache cache(cache_capacity(cfg));
-  std::vector<world::PlannedFrame> plan =
-      world::plan_captures(setup.world, cache, poses, [&](const std::string& w) { reporter.warn(w); });
+  WorldSchedule schedule(setup.world, cache_capacity(cfg));
+  const std::vector<world::PlannedFrame>& plan =
+      schedule.plan(std::move(poses), [&](const std::string& w) { reporter.warn(w); });
   const double plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_plan).count();
 
   const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(loaded), folder_mode(request));
@@ -68,28 +67,24 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
 
-  world::CaptureJob job;
-  job.world = &setup.world;
-  job.preset = setup.preset;
-  job.ontology = setup.ontology;
-  job.outputs = outputs;
-  job.run_dir = run_dir;
-  job.stop = [] { return interrupt_requested(); };
+  std::vector<world::PlannedFrame> frames;
   int skipped = 0;
   for (const auto& f : plan) {
     if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
-    if (fs::exists(run_dir / world::camera_file(f))) {
+    if (fs::exists(run_dir / systems::camera_file(f))) {
       ++skipped;
       continue;
     }
-    job.frames.push_back(f);
+    frames.push_back(f);
   }
-  reporter.note("silva: capturing " + std::to_string(job.frames.size()) + " frames at " +
+  reporter.note("silva: capturing " + std::to_string(frames.size()) + " frames at " +
                 std::to_string(cfg.output.width) + "x" + std::to_string(cfg.output.height) + " into " +
                 run_dir.string() + (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
 
-  Progress progress(reporter, int(job.frames.size()), "frames");
-  const world::CaptureStats stats = world::run_capture(job, cache, [&](int done, int) { progress.update(done); });
+  Progress progress(reporter, int(frames.size()), "frames");
+  const systems::CaptureStats stats =
+      schedule.capture(frames, {setup.preset, setup.ontology, outputs, run_dir},
+                       [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
   progress.finish();
 
   nlohmann::json record = make_run_record(stats, request.threads, skipped, plan_s);

@@ -35,7 +35,7 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   };
 }
 
-nlohmann::json make_run_record(const world::CaptureStats& s, int threads, int skipped, double plan_s) {
+nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int skipped, double plan_s) {
   char host[256] = {};
   gethostname(host, sizeof host - 1);
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/run_setup.hpp"
-#include "systems/capture_pipeline.hpp"
+#include "systems/write_dataset.hpp"
 
 namespace silva::app {
 
@@ -19,6 +19,6 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
 std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& frames);
 
 /// run.json: timings per phase, counts, thread count, host, date, git revision.
-nlohmann::json make_run_record(const world::CaptureStats& stats, int threads, int skipped, double plan_s);
+nlohmann::json make_run_record(const systems::CaptureStats& stats, int threads, int skipped, double plan_s);
 
 }  // namespace silva::app

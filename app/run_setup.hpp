@@ -9,7 +9,7 @@
 #include "assets/library.hpp"
 #include "core/ontology.hpp"
 #include "render/lighting.hpp"
-#include "systems/world_context.hpp"
+#include "world/world_context.hpp"
 
 namespace silva::app {
 

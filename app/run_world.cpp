@@ -3,15 +3,15 @@
 
 #include "app/commands.hpp"
 #include "app/run_setup.hpp"
-#include "assets/build_library.hpp"
+#include "app/asset_files.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/png_writer.hpp"
 #include "io/ontology_file.hpp"
-#include "systems/chunk_regions.hpp"
-#include "systems/class_map.hpp"
-#include "systems/export_world.hpp"
-#include "systems/world_build.hpp"
+#include "world/chunk_regions.hpp"
+#include "world/class_map.hpp"
+#include "app/world_export.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 namespace silva::app {
 
@@ -20,7 +20,7 @@ namespace {
 constexpr double kMapMetresPerPixel = 0.5;
 
 /// The world's totals as the JSON `--stats` and `--json` print (CONTRACT.md / README).
-nlohmann::json totals_json(const world::World& w, const Ontology& ontology) {
+nlohmann::json totals_json(const world::BuiltWorld& w, const Ontology& ontology) {
   const world::WorldTotals& t = w.totals;
   nlohmann::json per_class = nlohmann::json::object();
   for (int r = 0; r < kRoleCount; ++r)
@@ -51,13 +51,13 @@ int run_world(const WorldRequest& request, const Reporter& reporter) {
                                              cfg.terrain.chunk_size)
                      : world::default_world_chunks(cfg);
   reporter.note("building " + std::to_string(coords.size()) + " chunks (seed " + std::to_string(cfg.seed) + ")");
-  const world::World w = world::build_world(setup.world, coords, request.threads);
+  const world::BuiltWorld w = build_world(setup.world, coords, request.threads);
   nlohmann::json summary = totals_json(w, setup.ontology);
   summary["seed"] = cfg.seed;
   summary["threads"] = request.threads;
   if (!request.export_path.empty()) {
     const auto t = std::chrono::steady_clock::now();
-    io::write_glb(world::world_document(w, *setup.library, setup.ontology, request.instancing), request.export_path);
+    io::write_glb(world_document(w, *setup.library, setup.ontology, request.instancing), request.export_path);
     summary["export"] = {{"file", request.export_path.string()},
                          {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count()}};
   }
@@ -81,7 +81,7 @@ int run_world(const WorldRequest& request, const Reporter& reporter) {
 
 int run_assets_build(const AssetsBuildRequest& request, const Reporter& reporter) {
   const std::filesystem::path dir = request.out_dir.empty() ? std::filesystem::path(SILVA_ASSET_DIR) : request.out_dir;
-  const assets::AssetLibrary library = assets::build_library(dir);
+  const assets::AssetLibrary library = build_library(dir);
   reporter.result({{"ok", true}, {"dir", dir.string()}, {"assets", library.assets.size()}},
                   "wrote " + std::to_string(library.assets.size()) + " assets and library.json to " + dir.string());
   return 0;

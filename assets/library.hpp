@@ -1,29 +1,18 @@
 #pragma once
 /// @file The asset library: every placeable mesh variant with its LODs, classes and collision proxy.
-/// Built by assets::build_library (procedural generators -> .glb + library.json) and loaded
+/// Built by `silva assets build` (procedural generators -> .glb + library.json) and loaded
 /// through assimp by assets::load_library, so users can add or replace assets.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/asset_kind.hpp"
 #include "core/mesh.hpp"
 #include "core/ontology.hpp"
 
 namespace silva::assets {
 
-/// What kind of object an asset is, which decides how placement uses it.
-enum class AssetKind : uint8_t {
-  ConiferTree,
-  BroadleafTree,
-  DeadTree,
-  Stump,
-  Grass,
-  Fern,
-  Shrub,
-  Rock,
-  Log,
-  Count,
-};
+using silva::AssetKind;
 
 /// Collision proxy shape in object space (Z up, origin at the object's ground contact point).
 struct CollisionProxy {

@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 
 namespace silva::assets {
 
@@ -159,7 +158,7 @@ ManifestEntry manifest_entry(const Asset& asset) {
   return e;
 }
 
-void write_manifest(const std::filesystem::path& path, std::span<const ManifestEntry> entries) {
+std::string manifest_text(std::span<const ManifestEntry> entries) {
   json assets = json::array();
   for (const ManifestEntry& e : entries) {
     json parts = json::object();
@@ -173,8 +172,7 @@ void write_manifest(const std::filesystem::path& path, std::span<const ManifestE
                       {"collision", proxy_json(e.proxy)},
                       {"lod_screen_sizes", e.lod_screen_sizes}});
   }
-  const std::string text = json{{"format", kFormat}, {"version", kVersion}, {"assets", assets}}.dump(2) + "\n";
-  io::write_file_atomic(path, text);
+  return json{{"format", kFormat}, {"version", kVersion}, {"assets", assets}}.dump(2) + "\n";
 }
 
 std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path) {

@@ -39,8 +39,8 @@ struct ManifestEntry {
 /// Throws InputError if one material name is used with two roles.
 ManifestEntry manifest_entry(const Asset& asset);
 
-/// Writes library.json (deterministic bytes); throws IoError naming the path.
-void write_manifest(const std::filesystem::path& path, std::span<const ManifestEntry> entries);
+/// The text of library.json for `entries` (deterministic bytes; writing it is the caller's, through io).
+std::string manifest_text(std::span<const ManifestEntry> entries);
 
 /// Reads and validates library.json; throws InputError naming the file and key on any problem.
 std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path);

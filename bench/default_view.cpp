@@ -7,9 +7,9 @@
 #include "assets/factory.hpp"
 #include "render/instance_cull.hpp"
 #include "render/renderer.hpp"
-#include "systems/chunk_cache.hpp"
-#include "systems/chunk_regions.hpp"
-#include "systems/plan_captures.hpp"
+#include "world/chunk_cache.hpp"
+#include "world/chunk_regions.hpp"
+#include "world/plan_captures.hpp"
 
 namespace silva::bench {
 
@@ -53,7 +53,7 @@ DefaultView::DefaultView() : library(std::make_unique<assets::AssetLibrary>(asse
   const size_t yaws = cfg.captures.autopilot_yaws.size();
   camera = poses[(poses.size() / yaws / 2) * yaws + yaws / 2].camera;
   world::ChunkCache cache(256);
-  frame = world::SceneBuilder(*library).build(cache.require(ctx, world::chunks_in_view(camera, ctx.chunk_size())));
+  frame = systems::SceneBuilder(*library).build(cache.require(ctx, world::chunks_in_view(camera, ctx.chunk_size())));
   render::Renderer renderer;
   renderer.render_visibility(frame.scene, camera, render::RenderOptions{});
   drawn = freeze_lods(frame.scene, renderer.instance_lods(), drawn_from);

@@ -7,7 +7,7 @@
 #include "assets/library.hpp"
 #include "core/camera.hpp"
 #include "render/scene.hpp"
-#include "systems/scene_builder.hpp"
+#include "systems/prepare_scene.hpp"
 
 namespace silva::bench {
 
@@ -15,7 +15,7 @@ namespace silva::bench {
 /// peers get exactly the triangles Silva rasterises.
 struct DefaultView {
   std::unique_ptr<assets::AssetLibrary> library;  ///< Owner of the asset meshes the scenes point into.
-  world::FrameScene frame;                        ///< The view's chunks as the capture pipeline builds them.
+  systems::FrameScene frame;                        ///< The view's chunks as the capture pipeline builds them.
   Camera camera;                                  ///< The middle autopilot pose, 1920x1080.
   /// The instances Silva draws from `camera` with LODs on, in the same order, each with a
   /// single-LOD mesh: the LOD Silva selected (the peers' scene; draw it with render.lod = false).

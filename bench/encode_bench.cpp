@@ -12,6 +12,7 @@
 #include "core/instance_id.hpp"
 #include "core/rng.hpp"
 #include "io/capture_set.hpp"
+#include "io/label_planes.hpp"
 #include "io/exr_writer.hpp"
 #include "io/label_images.hpp"
 #include "io/png_writer.hpp"
@@ -79,8 +80,9 @@ std::vector<uint8_t> make_rgb(const render::GBuffer& g) {
 }
 
 struct Fixture {
-  render::GBuffer g = make_gbuffer();
-  std::vector<uint8_t> rgb = make_rgb(g);
+  render::GBuffer gbuffer = make_gbuffer();
+  io::LabelPlanes g{gbuffer.width, gbuffer.height, gbuffer.depth, gbuffer.normal, gbuffer.role, gbuffer.instance_id};
+  std::vector<uint8_t> rgb = make_rgb(gbuffer);
   Ontology ontology = default_ontology();
 };
 const Fixture& fixture() {

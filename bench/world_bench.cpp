@@ -9,10 +9,10 @@
 #include <map>
 
 #include "assets/factory.hpp"
-#include "systems/chunk_regions.hpp"
-#include "systems/placement.hpp"
-#include "systems/resolve.hpp"
-#include "systems/world_build.hpp"
+#include "world/chunk_regions.hpp"
+#include "world/placement.hpp"
+#include "world/resolve.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 namespace {
 
@@ -28,7 +28,7 @@ const assets::AssetLibrary& library() {
 constexpr int64_t kSeed = 1234567890;
 
 /// Publishes a world's totals as counters.
-void report(benchmark::State& state, const world::World& w, int threads) {
+void report(benchmark::State& state, const world::BuiltWorld& w, int threads) {
   const auto& t = w.totals;
   state.counters["chunks"] = double(t.chunks);
   state.counters["triangles"] = double(t.triangles);
@@ -56,10 +56,10 @@ void report(benchmark::State& state, const world::World& w, int threads) {
 /// Builds the default world of `cfg` once per iteration on `threads` threads.
 void run_default_world(benchmark::State& state, const Config& cfg, int threads) {
   library();
-  world::World w;
+  world::BuiltWorld w;
   for (auto _ : state) {
-    const world::WorldContext ctx = world::make_world_context(cfg, library());
-    w = world::build_default_world(ctx, threads);
+    const world::BuiltWorldContext ctx = world::make_world_context(cfg, library());
+    w = app::build_default_world(ctx, threads);
     benchmark::DoNotOptimize(w.hash);
   }
   report(state, w, threads);
@@ -117,7 +117,7 @@ void BM_PlaceResolve_OneCore(benchmark::State& state) {
   Config cfg;
   cfg.seed = kSeed;
   cfg.vegetation.density = double(state.range(0));
-  const world::WorldContext ctx = world::make_world_context(cfg, library());
+  const world::BuiltWorldContext ctx = world::make_world_context(cfg, library());
   const auto coords = world::chunks_in_disc(0, 0, 128, cfg.terrain.chunk_size);
   const int ring = ctx.neighbour_ring;
   uint64_t objects = 0;

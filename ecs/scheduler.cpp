@@ -151,6 +151,12 @@ void Scheduler::run_frame(Registry& registry, Resources& resources) {
   for (const PhasePlan& p : plan_) run_phase(p, registry, resources);
 }
 
+void Scheduler::run_phases(int first, int last, Registry& registry, Resources& resources) {
+  if (!built_) build();
+  for (const PhasePlan& p : plan_)
+    if (p.phase >= first && p.phase <= last) run_phase(p, registry, resources);
+}
+
 void Scheduler::run_phase(const PhasePlan& p, Registry& registry, Resources& resources) {
   const std::size_t n = p.members.size();
   std::vector<std::deque<CommandBuffer>> buffers(n);

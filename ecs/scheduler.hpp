@@ -39,6 +39,8 @@ class Scheduler {
   void build();
   /// Runs every phase once in ascending order (building first if systems changed).
   void run_frame(Registry& registry, Resources& resources);
+  /// Runs the phases numbered first..last (inclusive) once, in ascending order.
+  void run_phases(int first, int last, Registry& registry, Resources& resources);
   /// Timing counters of every system, in registration order.
   const std::vector<SystemStats>& stats() const { return stats_; }
   /// Zeroes every timing counter.

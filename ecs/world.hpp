@@ -46,6 +46,12 @@ class World : public Registry {
   void build_schedule() { scheduler_.build(); }
   /// Runs every phase once, in ascending order.
   void run_frame() { scheduler_.run_frame(*this, resources_); }
+  /// Runs the phases first..last (inclusive) once, in ascending order: e.g. a setup phase once,
+  /// then the per-frame phases every frame.
+  template <class E>
+  void run_phases(E first, E last) {
+    scheduler_.run_phases(static_cast<int>(first), static_cast<int>(last), *this, resources_);
+  }
   /// Timing counters of every system, in registration order.
   const std::vector<SystemStats>& system_stats() const { return scheduler_.stats(); }
   /// Zeroes the timing counters.

@@ -16,7 +16,7 @@ namespace {
 std::vector<uint8_t> bytes_of(const std::string& text) { return std::vector<uint8_t>(text.begin(), text.end()); }
 
 /// Encodes one output type into its file(s).
-std::vector<EncodedFile> encode_one(OutputType t, const render::GBuffer& g, std::span<const uint8_t> rgb,
+std::vector<EncodedFile> encode_one(OutputType t, const LabelPlanes& g, std::span<const uint8_t> rgb,
                                     const Ontology& ontology, int frame) {
   const int w = g.width, h = g.height;
   const std::string folder = output_type_name(t);
@@ -55,7 +55,7 @@ std::string frame_file(const std::string& folder, int frame, const std::string& 
   return folder + "/" + name + "." + ext;
 }
 
-EncodedSet encode_capture_set(const render::GBuffer& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
+EncodedSet encode_capture_set(const LabelPlanes& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
                               const OutputSelection& selection, int frame) {
   std::vector<OutputType> todo;
   for (int t = 0; t < kOutputTypeCount; ++t)

@@ -7,7 +7,7 @@
 
 #include "core/ontology.hpp"
 #include "io/output_types.hpp"
-#include "render/gbuffer.hpp"
+#include "io/label_planes.hpp"
 
 namespace silva::io {
 
@@ -27,7 +27,7 @@ std::string frame_file(const std::string& folder, int frame, const std::string& 
 /// R, G, B, width*height*3 bytes; may be empty when rgb is not selected) on the caller's TBB
 /// arena, one task per output. The result does not depend on the thread count.
 /// Throws InputError when the instance image would overflow (see instance_image).
-EncodedSet encode_capture_set(const render::GBuffer& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
+EncodedSet encode_capture_set(const LabelPlanes& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
                               const OutputSelection& selection, int frame);
 
 }  // namespace silva::io

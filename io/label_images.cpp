@@ -28,13 +28,13 @@ uint8_t normal_to_byte(float n) {
   return uint8_t(std::round((c + 1.0) * 127.5));
 }
 
-std::vector<uint8_t> semantic_image(const render::GBuffer& g, const Ontology& ontology) {
+std::vector<uint8_t> semantic_image(const LabelPlanes& g, const Ontology& ontology) {
   std::vector<uint8_t> out(g.size());
   for (size_t i = 0; i < out.size(); ++i) out[i] = ontology.id(g.role[i]);
   return out;
 }
 
-std::vector<uint8_t> semantic_color_image(const render::GBuffer& g, const Ontology& ontology) {
+std::vector<uint8_t> semantic_color_image(const LabelPlanes& g, const Ontology& ontology) {
   std::vector<uint8_t> out(g.size() * 3);
   for (size_t i = 0; i < g.size(); ++i) {
     const auto& c = ontology.color(g.role[i]);
@@ -45,19 +45,19 @@ std::vector<uint8_t> semantic_color_image(const render::GBuffer& g, const Ontolo
   return out;
 }
 
-std::vector<uint16_t> depth_mm_image(const render::GBuffer& g) {
+std::vector<uint16_t> depth_mm_image(const LabelPlanes& g) {
   std::vector<uint16_t> out(g.size());
   for (size_t i = 0; i < out.size(); ++i) out[i] = depth_to_mm(g.depth[i]);
   return out;
 }
 
-std::vector<uint8_t> depth_preview_image(const render::GBuffer& g) {
+std::vector<uint8_t> depth_preview_image(const LabelPlanes& g) {
   std::vector<uint8_t> out(g.size());
   for (size_t i = 0; i < out.size(); ++i) out[i] = depth_to_preview(g.depth[i]);
   return out;
 }
 
-std::vector<uint8_t> normal_image(const render::GBuffer& g) {
+std::vector<uint8_t> normal_image(const LabelPlanes& g) {
   std::vector<uint8_t> out(g.size() * 3, 0);
   for (size_t i = 0; i < g.size(); ++i) {
     if (!(g.depth[i] > 0.0f)) continue;
@@ -67,12 +67,12 @@ std::vector<uint8_t> normal_image(const render::GBuffer& g) {
 }
 
 namespace {
-bool carries_instance(const render::GBuffer& g, size_t i) {
+bool carries_instance(const LabelPlanes& g, size_t i) {
   return g.instance_id[i] != 0 && role_has_instances(g.role[i]);
 }
 }  // namespace
 
-InstanceImage instance_image(const render::GBuffer& g, const Ontology& ontology) {
+InstanceImage instance_image(const LabelPlanes& g, const Ontology& ontology) {
   // Pass 1: the lowest role seen per instance id (runs of equal ids skip the map).
   std::unordered_map<uint32_t, uint8_t> lowest_role;
   uint32_t last_id = 0;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/ontology.hpp"
-#include "render/gbuffer.hpp"
+#include "io/label_planes.hpp"
 
 namespace silva::io {
 
@@ -20,19 +20,19 @@ uint8_t depth_to_preview(float z);
 uint8_t normal_to_byte(float n);
 
 /// semantic: the ontology class id of each pixel's role.
-std::vector<uint8_t> semantic_image(const render::GBuffer& g, const Ontology& ontology);
+std::vector<uint8_t> semantic_image(const LabelPlanes& g, const Ontology& ontology);
 
 /// semantic_color: interleaved R, G, B ontology colour of each pixel's role.
-std::vector<uint8_t> semantic_color_image(const render::GBuffer& g, const Ontology& ontology);
+std::vector<uint8_t> semantic_color_image(const LabelPlanes& g, const Ontology& ontology);
 
 /// depth: 16-bit millimetres per depth_to_mm (the G-buffer already holds 0 beyond camera far).
-std::vector<uint16_t> depth_mm_image(const render::GBuffer& g);
+std::vector<uint16_t> depth_mm_image(const LabelPlanes& g);
 
 /// depth_preview: 8-bit white-near grey per depth_to_preview.
-std::vector<uint8_t> depth_preview_image(const render::GBuffer& g);
+std::vector<uint8_t> depth_preview_image(const LabelPlanes& g);
 
 /// normal: interleaved R, G, B = normal_to_byte of world normal x, y, z; (0, 0, 0) for no hit.
-std::vector<uint8_t> normal_image(const render::GBuffer& g);
+std::vector<uint8_t> normal_image(const LabelPlanes& g);
 
 /// One row of the per-frame instance table.
 struct InstanceEntry {
@@ -52,7 +52,7 @@ struct InstanceImage {
 /// non-zero instance_id get the index of that id; indices 1, 2, ... follow ascending instance_id.
 /// An instance whose pixels show several roles takes the class of the lowest role value.
 /// Throws InputError when more than 65535 instances are visible in the frame.
-InstanceImage instance_image(const render::GBuffer& g, const Ontology& ontology);
+InstanceImage instance_image(const LabelPlanes& g, const Ontology& ontology);
 
 /// instance/NNNNNN.json text: {"instances": [{"index", "instance_id", "class_id"}, ...]}.
 std::string instance_table_json(const std::vector<InstanceEntry>& entries);

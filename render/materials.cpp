@@ -42,7 +42,7 @@ Vec3f ground(const SurfacePoint& s) {
 }
 
 /// Packed dirt of the trail, pebbly; its edges (uv.x near 0 or 1) fade into the ground.
-/// Expects the trail mesh to carry uv.x in [0, 1] across its width (systems/trail.cpp does);
+/// Expects the trail mesh to carry uv.x in [0, 1] across its width (world/trail.cpp does);
 /// a uv.x outside (0, 1) is taken as "no across-coordinate" and gets no edge blend.
 Vec3f trail(const SurfacePoint& s) {
   const Vec3f& p = s.position;

@@ -10,7 +10,7 @@
 
 #include "core/config.hpp"
 #include "silva_process.hpp"
-#include "systems/terrain.hpp"
+#include "world/terrain.hpp"
 
 namespace silva::test {
 namespace {

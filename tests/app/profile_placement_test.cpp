@@ -7,7 +7,7 @@
 #include "app/profile_world.hpp"
 #include "app/run_setup.hpp"
 #include "silva_process.hpp"
-#include "systems/chunk_regions.hpp"
+#include "world/chunk_regions.hpp"
 
 namespace silva::app {
 namespace {

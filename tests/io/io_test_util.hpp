@@ -12,6 +12,7 @@
 
 #include "core/instance_id.hpp"
 #include "io/atomic_file.hpp"
+#include "io/label_planes.hpp"
 #include "render/gbuffer.hpp"
 #include "tests/common/scratch_dirs.hpp"
 
@@ -42,10 +43,16 @@ inline std::vector<uint8_t> file_bytes(const std::filesystem::path& p) {
   return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
+/// A renderer G-buffer that passes as the io LabelPlanes view of itself.
+struct TestGBuffer : render::GBuffer {
+  /// The planes io reads, viewing this buffer.
+  operator LabelPlanes() const { return {width, height, depth, normal, role, instance_id}; }
+};
+
 /// A w x h G-buffer with every role, sky, varied depths (incl. > 65.535 m), tilted normals and
 /// instance ids in runs, all from closed-form patterns.
-inline render::GBuffer synthetic_gbuffer(int w = 53, int h = 37) {
-  render::GBuffer g;
+inline TestGBuffer synthetic_gbuffer(int w = 53, int h = 37) {
+  TestGBuffer g;
   g.resize(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

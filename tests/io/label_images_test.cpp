@@ -101,7 +101,7 @@ TEST(LabelImages, InstanceIndicesAscendByInstanceIdAndMatchPixels) {
 }
 
 TEST(LabelImages, InstanceClassIsLowestRoleOfItsPixels) {
-  render::GBuffer g;
+  test::TestGBuffer g;
   g.resize(3, 1);
   for (int i = 0; i < 3; ++i) {
     g.depth[i] = 1.0f;
@@ -124,7 +124,7 @@ TEST(LabelImages, InstanceTableJsonLayout) {
 }
 
 TEST(LabelImages, MoreThan65535InstancesIsAClearError) {
-  render::GBuffer g;
+  test::TestGBuffer g;
   g.resize(300, 220);
   for (size_t i = 0; i < g.size(); ++i) {
     g.depth[i] = 1.0f;

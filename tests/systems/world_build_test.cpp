@@ -1,13 +1,13 @@
-#include "systems/world_build.hpp"
+#include "world/world_summary.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "core/rng.hpp"
-#include "systems/chunk_regions.hpp"
-#include "systems/world_generator.hpp"
-#include "test_library.hpp"
+#include "world/chunk_regions.hpp"
+#include "world/world_generator.hpp"
+#include "tests/common/test_library.hpp"
 
 namespace silva::world {
 

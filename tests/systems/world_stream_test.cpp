@@ -6,12 +6,12 @@
 
 #include "components/camera.hpp"
 #include "components/chunk.hpp"
-#include "systems/chunk_regions.hpp"
+#include "world/chunk_regions.hpp"
 #include "systems/stream_plan.hpp"
-#include "systems/world_build.hpp"
-#include "systems/world_generator.hpp"
+#include "world/world_summary.hpp"
+#include "world/world_generator.hpp"
 #include "systems/world_systems.hpp"
-#include "test_library.hpp"
+#include "tests/common/test_library.hpp"
 
 namespace silva::world {
 

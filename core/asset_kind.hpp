@@ -1,0 +1,21 @@
+#pragma once
+/// @file What kind of object an asset is: shared by the asset library, placement and the outputs.
+#include <cstdint>
+
+namespace silva {
+
+/// What kind of object an asset is, which decides how placement uses it.
+enum class AssetKind : uint8_t {
+  ConiferTree,
+  BroadleafTree,
+  DeadTree,
+  Stump,
+  Grass,
+  Fern,
+  Shrub,
+  Rock,
+  Log,
+  Count,
+};
+
+}  // namespace silva

@@ -1,0 +1,37 @@
+#include "systems/aim_camera.hpp"
+
+#include "components/camera.hpp"
+#include "components/chunk.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "render/shadow_plan.hpp"
+#include "world/chunk_regions.hpp"
+#include "world/plan_captures.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::systems {
+
+/// Radius around the camera whose objects may cast shadows into its view (metres).
+constexpr double kShadowCasterReach = 0.25 * render::kShadowExtent;
+
+void install_aim_camera(ecs::World& world) {
+  world.set_resource(CaptureQueue{});
+  world.set_resource(ViewChunks{});
+  world.system("aim_camera")
+      .phase(Phase::Stream)
+      .reads_resource<WorldSource>()
+      .writes_resource<CaptureQueue, ViewChunks>()
+      .reads<world::PlannedFrame>()
+      .run([](ecs::SystemContext& sys) {
+        CaptureQueue& queue = sys.resource<CaptureQueue>();
+        ViewChunks& view = sys.resource<ViewChunks>();
+        view.coords.clear();
+        queue.active = queue.pending() ? queue.cameras[queue.next++] : ecs::null_entity;
+        if (queue.active.is_null()) return;
+        const double chunk_size = sys.resource<const WorldSource>().ctx->chunk_size();
+        const Camera& camera = sys.get<const world::PlannedFrame>(queue.active).camera;
+        view.coords = world::chunks_for_view(camera, chunk_size, kShadowCasterReach);
+      });
+}
+
+}  // namespace silva::systems

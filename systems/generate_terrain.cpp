@@ -1,0 +1,23 @@
+#include "systems/generate_terrain.hpp"
+
+#include "components/chunk.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "world/world_generator.hpp"
+
+namespace silva::systems {
+
+void install_generate_terrain(ecs::World& world) {
+  world.system("generate_terrain")
+      .phase(Phase::Generate)
+      .reads_resource<WorldSource>()
+      .reads<Chunk>()
+      .writes<ChunkTerrain>()
+      .run([](ecs::SystemContext& sys) {
+        const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
+        sys.parallel_each<const Chunk, ChunkTerrain>(
+            [&](const Chunk& c, ChunkTerrain& t) { t = world::generate_terrain(ctx, c.coord); }, 1);
+      });
+}
+
+}  // namespace silva::systems

@@ -1,0 +1,11 @@
+#pragma once
+/// @file Generate phase: terrain and trail meshes of new chunks (system "generate_terrain").
+#include "ecs/world.hpp"
+
+namespace silva::systems {
+
+/// Registers "generate_terrain" (phase Generate): world::generate_terrain for every full chunk
+/// entity, in parallel over the entities.
+void install_generate_terrain(ecs::World& world);
+
+}  // namespace silva::systems

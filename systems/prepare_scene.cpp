@@ -1,0 +1,85 @@
+#include "systems/prepare_scene.hpp"
+
+#include <cstring>
+
+#include "components/camera.hpp"
+#include "components/phase.hpp"
+#include "components/chunk.hpp"
+#include "core/rng.hpp"
+#include "world/chunk_cache.hpp"
+#include "world/collision_proxy.hpp"
+#include "world/terrain_lod.hpp"
+
+namespace silva::systems {
+
+SceneBuilder::SceneBuilder(const assets::AssetLibrary& library) {
+  asset_meshes_.reserve(library.assets.size());
+  for (const assets::Asset& a : library.assets) {
+    render::MeshLods lods;
+    for (const Mesh& m : a.lods) lods.lods.push_back(&m);
+    lods.lod_screen_sizes = a.lod_screen_sizes;
+    lods.compute_bounds();
+    asset_meshes_.push_back(std::move(lods));
+  }
+}
+
+uint32_t variation_seed(const Vec3f& position) {
+  uint32_t bits[3];
+  std::memcpy(bits, position.data(), sizeof bits);
+  return uint32_t(hash_combine(hash_combine(bits[0], bits[1]), bits[2]));
+}
+
+FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const {
+  FrameScene out;
+  render::Scene& scene = out.scene;
+  scene.meshes = asset_meshes_;
+  size_t objects = 0;
+  for (const auto& c : chunks) objects += c->objects.size();
+  scene.instances.reserve(objects + 2 * chunks.size());
+  // `bounds`: cached with the chunk, or empty for the renderer to compute each pass.
+  auto add_world_mesh = [&](const Mesh& mesh, const Mesh* coarse, const AABB& bounds) {
+    if (mesh.indices.empty()) return;
+    render::MeshLods lods;
+    lods.lods.push_back(&mesh);
+    if (coarse && !coarse->indices.empty()) {
+      lods.lods.push_back(coarse);
+      lods.lod_screen_sizes.push_back(world::kTerrainLodScreenSize);
+    }
+    lods.bounds = bounds;
+    scene.meshes.push_back(std::move(lods));
+    render::Instance inst;
+    inst.mesh = uint32_t(scene.meshes.size() - 1);
+    scene.instances.push_back(inst);
+  };
+  for (const auto& c : chunks) {
+    add_world_mesh(c->terrain, &c->terrain_lod, c->terrain_bounds);
+    add_world_mesh(c->trail, nullptr, AABB{});
+    for (const Vegetation& v : c->objects) {
+      render::Instance inst;
+      inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);
+      inst.mesh = v.asset;
+      inst.instance_id = v.instance_id;
+      inst.variation = variation_seed(v.position);
+      scene.instances.push_back(inst);
+    }
+  }
+  out.chunks = std::move(chunks);
+  return out;
+}
+
+void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& library) {
+  world.set_resource(PreparedScene{});
+  world.system("prepare_scene")
+      .phase(Phase::Prepare)
+      .reads_resource<CaptureQueue, ViewChunks>()
+      .writes_resource<world::ChunkCache, PreparedScene>()
+      .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
+        PreparedScene& out = sys.resource<PreparedScene>();
+        out.ready = !sys.resource<const CaptureQueue>().active.is_null();
+        if (!out.ready) return;
+        const auto& coords = sys.resource<const ViewChunks>().coords;
+        out.frame = builder.build(sys.resource<world::ChunkCache>().take(coords));
+      });
+}
+
+}  // namespace silva::systems

@@ -1,0 +1,47 @@
+#pragma once
+/// @file Prepare phase: the active view's chunks, from the chunk cache, as a render::Scene
+/// (system "prepare_scene"), and the SceneBuilder that turns chunks + assets into scenes.
+#include <memory>
+#include <vector>
+
+#include "assets/library.hpp"
+#include "ecs/world.hpp"
+#include "render/scene.hpp"
+#include "world/chunk_content.hpp"
+
+namespace silva::systems {
+
+/// A scene plus the chunk contents its meshes point into (kept alive while it is drawn).
+struct FrameScene {
+  render::Scene scene;                                        ///< What the renderer draws.
+  std::vector<std::shared_ptr<const ChunkContent>> chunks;    ///< Owners of terrain/trail meshes.
+};
+
+/// Builds frame scenes; asset meshes come first (mesh index = asset index), then per-chunk
+/// terrain (with its coarse level as LOD 1) and trail meshes. Stuff (terrain, trail, grass,
+/// ferns) has instance id 0.
+class SceneBuilder {
+ public:
+  /// Registers every asset's LODs as drawable meshes.
+  explicit SceneBuilder(const assets::AssetLibrary& library);
+  /// Scene of the given chunks: terrain, trail piece and every object of each, in chunk order.
+  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
+
+ private:
+  std::vector<render::MeshLods> asset_meshes_;
+};
+
+/// Per-instance colour-variation seed derived from an object's position (stable across runs).
+uint32_t variation_seed(const Vec3f& position);
+
+/// Resource: the scene the Render phase draws this frame (empty without an active camera).
+struct PreparedScene {
+  FrameScene frame;  ///< Scene and the chunk contents it points into.
+  bool ready = false;  ///< True when `frame` holds the active camera's view.
+};
+
+/// Registers "prepare_scene" (phase Prepare): takes the ViewChunks from the ChunkCache resource
+/// (most recently used, evicting beyond capacity) and builds the PreparedScene resource.
+void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& library);
+
+}  // namespace silva::systems

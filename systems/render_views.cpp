@@ -1,0 +1,76 @@
+#include "systems/render_views.hpp"
+
+#include <utility>
+
+#include "components/camera.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "core/stopwatch.hpp"
+#include "render/shadow_plan.hpp"
+#include "systems/prepare_scene.hpp"
+#include "world/terrain.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::systems {
+
+std::shared_ptr<FrameWork> FrameSlots::take() {
+  std::unique_ptr<FrameWork> w;
+  {
+    const std::lock_guard lock(pool_->mutex);
+    if (!pool_->free.empty()) {
+      w = std::move(pool_->free.back());
+      pool_->free.pop_back();
+    }
+  }
+  if (!w) w = std::make_unique<FrameWork>();
+  return std::shared_ptr<FrameWork>(w.release(), [pool = pool_](FrameWork* p) {
+    const std::lock_guard lock(pool->mutex);
+    pool->free.emplace_back(p);
+  });
+}
+
+void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
+                  render::Renderer& renderer, FrameWork& work) {
+  const Camera& camera = work.frame.camera;
+  render::RenderOptions options;
+  options.lod = ctx.config.render.lod;
+  Stopwatch clock;
+  render::RenderStats stats;
+  renderer.render_gbuffer(scene, camera, options, work.gbuffer, &stats);
+  work.render_s = clock.seconds();
+  work.triangles_submitted = stats.triangles_submitted;
+  work.triangles_rasterised = stats.triangles_rasterised;
+  work.shadow_s = 0;
+  if (!settings.outputs.has(io::OutputType::Rgb)) return;
+  clock.restart();
+  const Vec3d sun = render::sun_direction(settings.preset).cast<double>();
+  const Vec3d p = camera.position();
+  const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
+  const render::ShadowPlan plan = render::plan_shadow(camera, ground_z, ctx.config.terrain.max_elevation, sun);
+  renderer.render_shadow_map(scene, sun, plan.region, plan.resolution, options, work.shadow);
+  work.shadow_s = clock.seconds();
+}
+
+void install_render_views(ecs::World& world, CaptureSettings settings) {
+  world.set_resource(std::move(settings));
+  world.set_resource(FrameSlots{});
+  world.system("render_views")
+      .phase(Phase::Render)
+      .reads_resource<WorldSource, CaptureQueue, CaptureSettings, PreparedScene>()
+      .writes_resource<FrameSlots>()
+      .reads<world::PlannedFrame>()
+      .run([](ecs::SystemContext& sys) {
+        FrameSlots& slots = sys.resource<FrameSlots>();
+        const ecs::Entity camera = sys.resource<const CaptureQueue>().active;
+        slots.current = nullptr;
+        if (camera.is_null()) return;
+        std::shared_ptr<FrameWork> work = slots.take();
+        work->frame = sys.get<const world::PlannedFrame>(camera);
+        work->files.clear();
+        render_frame(sys.resource<const PreparedScene>().frame.scene, *sys.resource<const WorldSource>().ctx,
+                     sys.resource<const CaptureSettings>(), *slots.renderer, *work);
+        slots.current = std::move(work);
+      });
+}
+
+}  // namespace silva::systems

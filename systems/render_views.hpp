@@ -1,0 +1,66 @@
+#pragma once
+/// @file Render phase: the active camera's visibility pass and sun shadow map into a frame slot
+/// (system "render_views"), and the frame slots that carry a frame on to the Write phase.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "core/ontology.hpp"
+#include "ecs/world.hpp"
+#include "io/capture_set.hpp"
+#include "io/output_types.hpp"
+#include "render/gbuffer.hpp"
+#include "render/lighting.hpp"
+#include "render/renderer.hpp"
+#include "world/plan_captures.hpp"
+
+namespace silva::systems {
+
+/// Resource: what a capture run renders and where it writes.
+struct CaptureSettings {
+  render::LightingPreset preset;     ///< Selected lighting preset.
+  Ontology ontology;                 ///< Class ids and colours.
+  io::OutputSelection outputs;       ///< Output types to write.
+  std::filesystem::path run_dir;     ///< <output.dir>/<seed>/.
+};
+
+/// One frame travelling from Render through Write; its buffers are reused across frames.
+struct FrameWork {
+  world::PlannedFrame frame;         ///< The planned capture.
+  render::GBuffer gbuffer;           ///< Labels, depth, normals.
+  std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
+  std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.
+  render::ShadowMap shadow;          ///< The view's sun shadow map.
+  io::EncodedSet files;              ///< Encoded outputs.
+  double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
+  uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
+};
+
+/// Resource: the renderer, the frame slots (recycled, so each in-flight frame's big buffers are
+/// allocated once per run) and the slot rendered this frame.
+class FrameSlots {
+ public:
+  /// A free slot (a new one when none is free); it returns to the pool when its last owner drops it.
+  std::shared_ptr<FrameWork> take();
+  std::unique_ptr<render::Renderer> renderer = std::make_unique<render::Renderer>();  ///< Keeps its pass buffers.
+  std::shared_ptr<FrameWork> current; ///< The slot the Render phase filled this frame (or null).
+
+ private:
+  struct Pool {
+    std::mutex mutex;
+    std::vector<std::unique_ptr<FrameWork>> free;
+  };
+  std::shared_ptr<Pool> pool_ = std::make_shared<Pool>();
+};
+
+/// Renders `work.frame`'s G-buffer (and its shadow map when rgb is selected) from `scene`.
+void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
+                  render::Renderer& renderer, FrameWork& work);
+
+/// Registers "render_views" (phase Render): when a camera is active, renders the PreparedScene
+/// into a fresh FrameSlots slot, left in FrameSlots::current for the Write phase.
+void install_render_views(ecs::World& world, CaptureSettings settings);
+
+}  // namespace silva::systems

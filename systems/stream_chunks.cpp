@@ -1,0 +1,53 @@
+#include "systems/stream_chunks.hpp"
+
+#include <algorithm>
+#include <set>
+#include <vector>
+
+#include "components/chunk.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "world/chunk_cache.hpp"
+#include "world/chunk_content.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::systems {
+
+namespace {
+
+/// The chunks within `ring` of any of `full` that are not in `full`, sorted.
+std::vector<ChunkCoord> halo_of(const std::vector<ChunkCoord>& full, int ring) {
+  std::set<ChunkCoord> halo;
+  for (ChunkCoord c : full)
+    for (int dj = -ring; dj <= ring; ++dj)
+      for (int di = -ring; di <= ring; ++di) halo.insert(ChunkCoord{c.i + di, c.j + dj});
+  for (ChunkCoord c : full) halo.erase(c);
+  return {halo.begin(), halo.end()};
+}
+
+/// Spawns chunk entities for the needed chunks the cache lacks.
+void stream(ecs::SystemContext& sys) {
+  const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
+  std::vector<ChunkCoord> needed = sys.resource<const ViewChunks>().coords;
+  const auto& pinned = sys.resource<const PinnedChunks>().coords;
+  needed.insert(needed.end(), pinned.begin(), pinned.end());
+  const std::vector<ChunkCoord> full = sys.resource<const world::ChunkCache>().missing(needed);
+  if (full.empty()) return;
+  ecs::CommandBuffer& cb = sys.commands();
+  for (ChunkCoord c : full) cb.spawn(Chunk{c, false}, ChunkTerrain{}, ChunkPlacement{}, ChunkObjects{});
+  for (ChunkCoord c : halo_of(full, ctx.neighbour_ring)) cb.spawn(Chunk{c, true}, ChunkPlacement{});
+}
+
+}  // namespace
+
+void install_stream_chunks(ecs::World& world) {
+  if (!world.has_resource<PinnedChunks>()) world.set_resource(PinnedChunks{});
+  world.system("stream_chunks")
+      .phase(Phase::Stream)
+      .after("aim_camera")
+      .reads_resource<WorldSource, ViewChunks, PinnedChunks, world::ChunkCache>()
+      .writes<Chunk>()
+      .run(stream);
+}
+
+}  // namespace silva::systems

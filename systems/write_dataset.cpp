@@ -1,0 +1,128 @@
+#include "systems/write_dataset.hpp"
+
+#include <memory>
+#include <string>
+#include <system_error>
+#include <utility>
+
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "core/error.hpp"
+#include "core/stopwatch.hpp"
+#include "io/atomic_file.hpp"
+#include "io/camera_json.hpp"
+#include "io/label_planes.hpp"
+#include "render/edge_aa.hpp"
+#include "render/shade.hpp"
+#include "systems/render_views.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::systems {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The planes the label encoders read, viewing `g`.
+io::LabelPlanes label_planes(const render::GBuffer& g) {
+  return {g.width, g.height, g.depth, g.normal, g.role, g.instance_id};
+}
+
+/// The camera record of a planned frame.
+io::CameraRecord camera_record(const world::PlannedFrame& f) {
+  io::CameraRecord r;
+  r.frame = f.frame;
+  r.sequence = f.sequence;
+  r.perspective = f.aerial ? io::Perspective::Aerial : io::Perspective::Ground;
+  r.camera = f.camera;
+  r.yaw_deg = f.yaw_deg;
+  r.pitch_deg = f.pitch_deg;
+  r.roll_deg = f.roll_deg;
+  r.trail_s = f.trail_s;
+  return r;
+}
+
+/// Shades RGB (when selected) and encodes every selected output of `work`.
+void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+  const world::PlannedFrame& f = work.frame;
+  if (settings.outputs.has(io::OutputType::Rgb)) {
+    const Stopwatch clock;
+    const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
+                                 f.sequence, uint64_t(f.frame), float(ctx.config.camera.film_grain)};
+    render::shade_rgb(in, work.rgb);
+    if (ctx.config.camera.antialias) {
+      render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
+      work.rgb.swap(work.rgb_scratch);
+    }
+    work.shade_s = clock.seconds();
+  } else {
+    work.shade_s = 0;
+  }
+  const Stopwatch clock;
+  work.files = io::encode_capture_set(label_planes(work.gbuffer), work.rgb, settings.ontology, settings.outputs, f.frame);
+  work.encode_s = clock.seconds();
+}
+
+/// Writes `work`'s files and camera JSON and adds the frame to the writer's stats.
+void write_frame(const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
+  const Stopwatch clock;
+  CaptureStats& stats = writer.stats;
+  const fs::path seq = settings.run_dir / work.frame.sequence;
+  for (const io::EncodedFile& file : work.files) {
+    io::write_file_atomic(seq / file.relative_path, file.bytes);
+    stats.bytes_written += file.bytes.size();
+  }
+  const std::string camera = io::camera_json(camera_record(work.frame));
+  io::write_file_atomic(settings.run_dir / camera_file(work.frame), camera);
+  stats.bytes_written += camera.size();
+  stats.write_s += clock.seconds();
+  stats.render_s += work.render_s;
+  stats.shadow_s += work.shadow_s;
+  stats.shade_s += work.shade_s;
+  stats.encode_s += work.encode_s;
+  stats.triangles_submitted += work.triangles_submitted;
+  stats.triangles_rasterised += work.triangles_rasterised;
+  ++stats.frames_written;
+  if (writer.progress) writer.progress(stats.frames_written, writer.total);
+}
+
+}  // namespace
+
+fs::path camera_file(const world::PlannedFrame& frame) {
+  return fs::path(frame.sequence) / io::frame_file("camera", frame.frame, "json");
+}
+
+void create_output_folders(const fs::path& run_dir, const std::vector<world::PlannedFrame>& frames,
+                           const io::OutputSelection& outputs) {
+  for (const world::PlannedFrame& f : frames) {
+    const fs::path seq = run_dir / f.sequence;
+    if (fs::exists(seq / "camera")) continue;
+    std::vector<std::string> names = {"camera"};
+    for (int t = 0; t < io::kOutputTypeCount; ++t)
+      if (outputs.has(io::OutputType(t))) names.push_back(io::output_type_name(io::OutputType(t)));
+    for (const auto& n : names) {
+      std::error_code ec;
+      fs::create_directories(seq / n, ec);
+      if (ec) throw IoError("cannot create folder " + (seq / n).string() + ": " + ec.message());
+    }
+  }
+}
+
+void install_write_dataset(ecs::World& world) {
+  world.set_resource(std::make_unique<DatasetWriter>());
+  world.system("write_dataset")
+      .phase(Phase::Write)
+      .reads_resource<WorldSource, CaptureSettings>()
+      .writes_resource<FrameSlots, std::unique_ptr<DatasetWriter>>()
+      .run([](ecs::SystemContext& sys) {
+        std::shared_ptr<FrameWork> work = std::move(sys.resource<FrameSlots>().current);
+        if (!work) return;
+        const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
+        const CaptureSettings& settings = sys.resource<const CaptureSettings>();
+        DatasetWriter& writer = *sys.resource<std::unique_ptr<DatasetWriter>>();
+        writer.stage.submit([&ctx, &settings, work] { shade_and_encode(ctx, settings, *work); },
+                            [&settings, &writer, work] { write_frame(settings, *work, writer); });
+      });
+}
+
+}  // namespace silva::systems

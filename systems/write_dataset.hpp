@@ -1,0 +1,61 @@
+#pragma once
+/// @file Write phase: a rendered frame's shading, encoding and files, overlapping the next frame's
+/// render (system "write_dataset").
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+
+#include "ecs/ordered_stage.hpp"
+#include "ecs/world.hpp"
+#include "io/output_types.hpp"
+#include "world/plan_captures.hpp"
+
+namespace silva::systems {
+
+/// Frames in flight at once (shading/encoding and writing while the next one renders).
+inline constexpr size_t kFramesInFlight = 3;
+
+/// Counts and per-step wall times of a capture run (seconds summed over frames).
+struct CaptureStats {
+  int frames_written = 0;             ///< Frames completed.
+  bool stopped = false;               ///< True when the run ended early because it was asked to stop.
+  uint64_t bytes_written = 0;         ///< Bytes of every file written.
+  uint64_t triangles_submitted = 0;   ///< Sum over frames (camera passes).
+  uint64_t triangles_rasterised = 0;  ///< Sum over frames (camera passes).
+  uint64_t chunks_generated = 0;      ///< Chunks generated (cache misses).
+  double stream_s = 0;   ///< Stream .. Resolve phases (chunk generation on misses included).
+  double prepare_s = 0;  ///< Scene building.
+  double render_s = 0;   ///< Visibility pass + resolve.
+  double shadow_s = 0;   ///< Sun shadow map pass.
+  double shade_s = 0;    ///< RGB shading.
+  double encode_s = 0;   ///< Encoding all outputs.
+  double write_s = 0;    ///< Writing files.
+  double wall_s = 0;     ///< Whole run, wall clock.
+};
+
+/// Called after each frame is written with (frames done, frames total).
+using ProgressFn = std::function<void(int done, int total)>;
+
+/// Resource: the ordered stage that shades, encodes and writes frames, and what it has done.
+struct DatasetWriter {
+  ecs::OrderedStage stage{kFramesInFlight};  ///< Parallel shade + encode, then in-order writes.
+  CaptureStats stats;                        ///< Updated by the in-order part of each frame.
+  ProgressFn progress;                       ///< Told after each frame (may be empty).
+  int total = 0;                             ///< Frames the run captures (for progress).
+};
+
+/// Sequence-relative path of a frame's camera file, whose presence marks the frame complete.
+std::filesystem::path camera_file(const world::PlannedFrame& frame);
+
+/// Creates the output folders of `frames`' sequences under `run_dir` for the selected outputs.
+void create_output_folders(const std::filesystem::path& run_dir, const std::vector<world::PlannedFrame>& frames,
+                           const io::OutputSelection& outputs);
+
+/// Registers "write_dataset" (phase Write) and its std::unique_ptr<DatasetWriter> resource (set its
+/// progress and total before the frames run): hands FrameSlots::current to the writer's stage:
+/// RGB shading and encoding in parallel, then the frame's files written atomically in frame order,
+/// its camera JSON last (its presence marks the frame complete). Waits for the oldest frame when
+/// kFramesInFlight are unfinished.
+void install_write_dataset(ecs::World& world);
+
+}  // namespace silva::systems

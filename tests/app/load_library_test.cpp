@@ -1,0 +1,210 @@
+#include "assets/load_library.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "app/asset_files.hpp"
+#include "core/error.hpp"
+#include "mesh_checks.hpp"
+
+namespace silva::assets {
+using app::build_library;
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Builds the library once for all tests of this file (it is the slow part).
+class LoadLibraryTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(fs::temp_directory_path() / ("silva_library_test_" + std::to_string(::getpid())));
+    fs::remove_all(*dir_);
+    built_ = new AssetLibrary(build_library(*dir_, 42));
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete built_;
+    delete dir_;
+  }
+  /// A copy of the library folder with library.json replaced by `manifest` (or kept if empty).
+  static fs::path variant(const std::string& name, const std::string& manifest = "") {
+    const fs::path d = *dir_ / name;
+    fs::create_directories(d);
+    for (const auto& f : fs::directory_iterator(*dir_))
+      if (f.is_regular_file()) fs::copy_file(f.path(), d / f.path().filename(), fs::copy_options::overwrite_existing);
+    if (!manifest.empty()) std::ofstream(d / "library.json") << manifest;
+    return d / "library.json";
+  }
+  static std::string manifest_text() {
+    std::ifstream f(*dir_ / "library.json");
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  }
+  /// Expects load_library to throw InputError mentioning every string in `needles`.
+  static void expect_error(const fs::path& manifest, std::initializer_list<std::string> needles) {
+    try {
+      load_library(manifest);
+      FAIL() << "no error";
+    } catch (const InputError& e) {
+      for (const std::string& n : needles) EXPECT_NE(std::string(e.what()).find(n), std::string::npos) << e.what();
+    }
+  }
+  static fs::path* dir_;
+  static AssetLibrary* built_;
+};
+fs::path* LoadLibraryTest::dir_ = nullptr;
+AssetLibrary* LoadLibraryTest::built_ = nullptr;
+
+TEST_F(LoadLibraryTest, WritesOneGlbPerAssetAndAManifest) {
+  EXPECT_TRUE(fs::is_regular_file(*dir_ / "library.json"));
+  for (const Asset& a : built_->assets) EXPECT_TRUE(fs::is_regular_file(*dir_ / a.file)) << a.file;
+}
+
+TEST_F(LoadLibraryTest, RoundTripThroughAssimpKeepsLodsRolesMasksAndProxies) {
+  const AssetLibrary loaded = load_library(*dir_ / "library.json");
+  ASSERT_EQ(loaded.assets.size(), built_->assets.size());
+  for (size_t i = 0; i < loaded.assets.size(); ++i) {
+    const Asset &a = built_->assets[i], &b = loaded.assets[i];
+    SCOPED_TRACE(a.name);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.kind, b.kind);
+    EXPECT_EQ(a.role, b.role);
+    EXPECT_EQ(a.lod_screen_sizes, b.lod_screen_sizes);
+    EXPECT_EQ(a.proxy.shape, b.proxy.shape);
+    EXPECT_EQ(a.proxy.center, b.proxy.center);
+    EXPECT_EQ(a.proxy.radius, b.proxy.radius);
+    EXPECT_EQ(a.proxy.height, b.proxy.height);
+    EXPECT_EQ(a.proxy.half_extents, b.proxy.half_extents);
+    ASSERT_EQ(a.lods.size(), b.lods.size());
+    for (size_t k = 0; k < a.lods.size(); ++k) {
+      const Mesh &ma = a.lods[k], &mb = b.lods[k];
+      test::expect_valid_mesh(mb, "loaded lod" + std::to_string(k));
+      EXPECT_EQ(ma.triangle_count(), mb.triangle_count());
+      ASSERT_EQ(ma.parts.size(), mb.parts.size());
+      for (size_t p = 0; p < ma.parts.size(); ++p) {
+        EXPECT_EQ(ma.parts[p].role, mb.parts[p].role);
+        EXPECT_EQ(ma.parts[p].material, mb.parts[p].material);
+        EXPECT_EQ(ma.parts[p].index_count, mb.parts[p].index_count);
+        EXPECT_EQ(ma.parts[p].double_sided, mb.parts[p].double_sided);
+        ASSERT_EQ(bool(ma.parts[p].mask), bool(mb.parts[p].mask));
+        if (ma.parts[p].mask) {
+          EXPECT_EQ(ma.parts[p].mask->alpha, mb.parts[p].mask->alpha);
+          EXPECT_EQ(ma.parts[p].mask->width, mb.parts[p].mask->width);
+          EXPECT_EQ(ma.parts[p].mask->cutoff, mb.parts[p].mask->cutoff);
+        }
+      }
+      // Geometry comes back in Silva's Z-up axes: same bounds, same corners of each triangle.
+      EXPECT_EQ(ma.bounds().min, mb.bounds().min);
+      EXPECT_EQ(ma.bounds().max, mb.bounds().max);
+      for (size_t t = 0; t < ma.indices.size(); t += 97) {
+        EXPECT_EQ(ma.positions[ma.indices[t]], mb.positions[mb.indices[t]]);
+        EXPECT_NEAR((ma.normals[ma.indices[t]] - mb.normals[mb.indices[t]]).norm(), 0.0f, 1e-5f);
+        EXPECT_NEAR((ma.uvs[ma.indices[t]] - mb.uvs[mb.indices[t]]).norm(), 0.0f, 1e-6f);
+      }
+    }
+  }
+  for (size_t k = 0; k < size_t(AssetKind::Count); ++k) EXPECT_EQ(loaded.by_kind[k], built_->by_kind[k]);
+}
+
+TEST_F(LoadLibraryTest, BuildIsDeterministic) {
+  const fs::path again = *dir_ / "again";
+  build_library(again, 42);
+  for (const Asset& a : built_->assets) {
+    std::ifstream x(*dir_ / a.file, std::ios::binary), y(again / a.file, std::ios::binary);
+    EXPECT_TRUE(std::equal(std::istreambuf_iterator<char>(x), {}, std::istreambuf_iterator<char>(y))) << a.file;
+  }
+}
+
+TEST_F(LoadLibraryTest, MissingAssetFileNamesTheFile) {
+  const fs::path m = variant("missing");
+  fs::remove(m.parent_path() / "rock_02.glb");
+  expect_error(m, {"rock_02.glb", "not found"});
+}
+
+TEST_F(LoadLibraryTest, CorruptAssetFileNamesTheFile) {
+  const fs::path m = variant("corrupt");
+  std::ofstream(m.parent_path() / "log_01.glb", std::ios::trunc) << "glTF this is not a model";
+  expect_error(m, {"log_01.glb", "cannot be read"});
+}
+
+TEST_F(LoadLibraryTest, UntaggedPartNamesTheFileAndMaterial) {
+  std::string text = manifest_text();
+  const std::string tag = R"("needles": "tree_canopy")";
+  const size_t at = text.find(tag);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, tag.size(), R"("pine_needles": "tree_canopy")");
+  expect_error(variant("untagged", text), {"conifer_00.glb", "needles", "no class"});
+}
+
+TEST_F(LoadLibraryTest, BadManifestNamesTheManifest) {
+  const fs::path m = variant("badjson", "{\"format\": ");
+  expect_error(m, {m.string(), "not valid JSON"});
+}
+
+TEST_F(LoadLibraryTest, UserObjAssetGetsLodsBuiltAndYUpTurnedToZUp) {
+  const fs::path d = *dir_ / "user";
+  fs::create_directories(d);
+  // A 2 m tall, Y-up triangulated box-ish pyramid as OBJ (4-sided, apex up along +Y).
+  std::ofstream(d / "spire.obj") << "mtllib spire.mtl\nv -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 2 0\n"
+                                    "usemtl granite\nf 1 2 3\nf 1 3 4\nf 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n";
+  std::ofstream(d / "spire.mtl") << "newmtl granite\nKd 0.5 0.5 0.5\n";
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "spire", "file": "spire.obj", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": [0.1]}]})";
+  const AssetLibrary lib = load_library(d / "library.json");
+  ASSERT_EQ(lib.assets.size(), 1u);
+  const Asset& a = lib.assets[0];
+  ASSERT_GE(a.lods.size(), 1u);
+  EXPECT_EQ(a.lods[0].triangle_count(), 6u);
+  EXPECT_EQ(a.lods[0].parts[0].role, Role::Obstacle);
+  EXPECT_EQ(a.lods[0].parts[0].material, Material::Rock);  // "granite" is no core material
+  EXPECT_FLOAT_EQ(a.lods[0].bounds().max.z(), 2.0f);      // +Y became +Z
+  EXPECT_EQ(a.lod_screen_sizes.size(), a.lods.size() - 1);
+  EXPECT_EQ(lib.by_kind[size_t(AssetKind::Rock)], std::vector<uint32_t>{0});
+}
+
+TEST_F(LoadLibraryTest, UserAssetKeepsItsOwnTextureAndColour) {
+  const fs::path d = *dir_ / "textured";
+  fs::create_directories(d);
+  cv::Mat texture(1, 2, CV_8UC3);
+  texture.at<cv::Vec3b>(0, 0) = cv::Vec3b(0, 0, 255);  // OpenCV is BGR: red
+  texture.at<cv::Vec3b>(0, 1) = cv::Vec3b(255, 0, 0);  // blue
+  ASSERT_TRUE(cv::imwrite((d / "bark.png").string(), texture));
+  std::ofstream(d / "post.obj") << "mtllib post.mtl\nv 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\n"
+                                   "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                   "usemtl photo_bark\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"
+                                   "usemtl painted\nf 1/1 3/3 2/2\n";
+  std::ofstream(d / "post.mtl") << "newmtl photo_bark\nKd 0.8 0.7 0.6\nmap_Kd bark.png\n"
+                                   "newmtl painted\nKd 0.1 0.2 0.3\n";
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "post", "file": "post.obj", "kind": "stump", "class": "stump",
+     "parts": {"photo_bark": "stump", "painted": "stump"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  const AssetLibrary lib = load_library(d / "library.json");
+  ASSERT_EQ(lib.assets.size(), 1u);
+  const Mesh& m = lib.assets[0].lods[0];
+  ASSERT_EQ(m.parts.size(), 2u);
+  const BaseColor* bark = m.parts[0].base_color.get();
+  const BaseColor* painted = m.parts[1].base_color.get();
+  ASSERT_NE(bark, nullptr);
+  ASSERT_NE(painted, nullptr);
+  EXPECT_EQ(bark->width, 2);
+  EXPECT_EQ(bark->height, 1);
+  EXPECT_EQ(bark->srgb, (std::vector<uint8_t>{255, 0, 0, 0, 0, 255}));  // RGB order
+  EXPECT_TRUE(bark->factor.isApprox(Vec3f(0.8f, 0.7f, 0.6f)));
+  EXPECT_EQ(painted->width, 0);  // colour only
+  EXPECT_TRUE(painted->factor.isApprox(Vec3f(0.1f, 0.2f, 0.3f)));
+  EXPECT_EQ(m.parts[0].material, Material::Wood);  // the role's material still decides translucency
+}
+
+TEST_F(LoadLibraryTest, CoreMaterialNamesKeepTheProceduralLook) {
+  const AssetLibrary loaded = load_library(*dir_ / "library.json");  // our glb files name core materials
+  for (const Asset& a : loaded.assets)
+    for (const Mesh& lod : a.lods)
+      for (const MeshPart& p : lod.parts) EXPECT_EQ(p.base_color, nullptr) << a.name;
+}
+
+}  // namespace
+}  // namespace silva::assets

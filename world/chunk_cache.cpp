@@ -1,0 +1,74 @@
+#include "world/chunk_cache.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+#include "world/world_generator.hpp"
+
+namespace silva::world {
+
+namespace {
+
+/// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level and bounds.
+ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord) {
+  ChunkContent c = generate_chunk(ctx, coord);
+  add_terrain_level(c);
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::require(const WorldContext& ctx,
+                                                                     const std::vector<ChunkCoord>& coords) {
+  const std::vector<ChunkCoord> todo = missing(coords);
+  std::vector<std::shared_ptr<const ChunkContent>> fresh(todo.size());
+  tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) {
+    fresh[k] = std::make_shared<const ChunkContent>(drawable_chunk(ctx, todo[k]));
+  });
+  insert(std::move(fresh));
+  return take(coords);
+}
+
+std::vector<ChunkCoord> ChunkCache::missing(const std::vector<ChunkCoord>& coords) const {
+  std::vector<ChunkCoord> out;
+  for (ChunkCoord c : coords)
+    if (!map_.count(c)) out.push_back(c);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+void ChunkCache::insert(std::vector<std::shared_ptr<const ChunkContent>> chunks) {
+  for (auto& chunk : chunks) {
+    const ChunkCoord c = chunk->coord;
+    if (map_.count(c)) continue;
+    lru_.push_front(c);
+    map_.emplace(c, Entry{std::move(chunk), lru_.begin()});
+    ++generated_;
+  }
+}
+
+std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::take(const std::vector<ChunkCoord>& coords) {
+  std::vector<std::shared_ptr<const ChunkContent>> out;
+  out.reserve(coords.size());
+  for (ChunkCoord c : coords) {
+    Entry& e = map_.at(c);
+    lru_.splice(lru_.begin(), lru_, e.position);
+    out.push_back(e.content);
+  }
+  // Evict beyond capacity, but never a chunk this call needs.
+  const size_t keep = std::max(capacity_, coords.size());
+  while (map_.size() > keep) {
+    map_.erase(lru_.back());
+    lru_.pop_back();
+  }
+  return out;
+}
+
+std::shared_ptr<const ChunkContent> ChunkCache::find(ChunkCoord c) const {
+  const auto it = map_.find(c);
+  return it == map_.end() ? nullptr : it->second.content;
+}
+
+}  // namespace silva::world

@@ -1,0 +1,98 @@
+#include "world/placement.hpp"
+
+#include <cmath>
+
+#include "core/rng.hpp"
+#include "world/class_mix.hpp"
+
+namespace silva::world {
+
+using assets::AssetKind;
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+/// Per-point draw streams: every attribute has its own purpose, keyed by (chunk, point).
+struct PointDraws {
+  uint64_t seed, key;
+  /// Stream for one purpose; `sub` separates the objects of one point.
+  Rng stream(Purpose p, uint32_t sub) const { return Rng(seed, key, p, uint64_t(sub) * 8); }
+};
+
+/// Most ground points hold 1..3 grass/fern tufts; ferns grow more under denser canopy.
+constexpr uint32_t kMaxGroundPerPoint = 3;
+
+}  // namespace
+
+bool outranks(const Candidate& a, const Candidate& b) {
+  if (a.rank != b.rank) return a.rank < b.rank;
+  if (a.priority != b.priority) return a.priority > b.priority;
+  if (a.chunk_key != b.chunk_key) return a.chunk_key < b.chunk_key;
+  if (a.point != b.point) return a.point < b.point;
+  return a.sub < b.sub;
+}
+
+ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool with_ground) {
+  const Config& cfg = ctx.config;
+  const auto& lib = *ctx.library;
+  const double s = cfg.terrain.chunk_size, gs = cfg.vegetation.grid_spacing;
+  const int n = int(std::lround(s / gs));
+  const double radius = kAdmissibleFraction * gs;
+  const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground);
+  const double fern_share = 0.2 + 2.0 * cfg.vegetation.density / 100.0;
+  const double x0 = coord.i * s, y0 = coord.j * s;
+  const double pad = ctx.trail.corridor_half_width() + std::max<double>(ctx.max_footprint, kGroundFootprint * kMaxScale);
+  const auto trail_segments = trail_segments_near(ctx.trail, x0, y0, x0 + s, y0 + s, pad);
+  const double corridor = ctx.trail.corridor_half_width();
+
+  ChunkCandidates out;
+  auto propose = [&](AssetKind kind, const PointDraws& d, uint32_t point, uint32_t sub, double cx, double cy) {
+    const auto& variants = lib.by_kind[size_t(kind)];
+    if (variants.empty()) return;
+    Rng pos = d.stream(Purpose::PlacementPosition, sub);
+    const double r = radius * std::sqrt(pos.uniform_double()), th = kTwoPi * pos.uniform_double();
+    const double x = cx + r * std::cos(th), y = cy + r * std::sin(th);
+    Candidate c;
+    c.asset = variants[d.stream(Purpose::PlacementVariant, sub).below(uint32_t(variants.size()))];
+    c.kind = kind;
+    const auto sr = scale_range(kind);
+    c.scale = d.stream(Purpose::PlacementScale, sub).range(sr[0], sr[1]);
+    c.footprint = ctx.footprint[c.asset] * c.scale;
+    if (!trail_segments.empty() && trail_distance(ctx.trail, trail_segments, x, y) < corridor + c.footprint) {
+      ++out.trail_rejected;
+      return;
+    }
+    c.yaw = float(kTwoPi * d.stream(Purpose::PlacementYaw, sub).uniform_double());
+    c.position = Vec3f(float(x), float(y), terrain_height(ctx.terrain, x, y));
+    c.point = point;
+    c.sub = uint16_t(sub);
+    c.rank = kind_rank(kind);
+    c.chunk_key = coord.key();
+    c.priority = rng_bits(d.seed, d.key, uint64_t(Purpose::ResolvePriority), sub);
+    const bool solid = is_solid(kind) && lib.assets[c.asset].proxy.shape != assets::CollisionProxy::Shape::None;
+    (solid ? out.solids : out.ground).push_back(c);
+  };
+
+  for (int gy = 0; gy < n; ++gy) {
+    for (int gx = 0; gx < n; ++gx) {
+      const uint32_t point = uint32_t(gy * n + gx);
+      const PointDraws d{uint64_t(cfg.seed), hash_combine(coord.key(), point)};
+      const double cx = x0 + (gx + 0.5) * gs, cy = y0 + (gy + 0.5) * gs;
+      const PointClass cls = pick_class(mix, d.stream(Purpose::PlacementClass, 0).uniform_double());
+      if (cls == PointClass::Nothing) continue;
+      if (cls != PointClass::Ground) {
+        propose(kind_of(cls), d, point, 0, cx, cy);
+        continue;
+      }
+      if (!with_ground) continue;
+      Rng cover = d.stream(Purpose::GroundCover, 0);
+      const uint32_t count = 1 + cover.below(kMaxGroundPerPoint);
+      for (uint32_t sub = 0; sub < count; ++sub)
+        propose(cover.uniform_double() < fern_share ? AssetKind::Fern : AssetKind::Grass, d, point, sub, cx, cy);
+    }
+  }
+  return out;
+}
+
+}  // namespace silva::world

@@ -1,0 +1,34 @@
+#pragma once
+/// @file Everything chunk generation reads, computed once in setup: config, asset tables,
+/// terrain field and trail. Immutable afterwards, so chunks can be generated on any thread.
+#include <array>
+#include <vector>
+
+#include "assets/library.hpp"
+#include "core/config.hpp"
+#include "world/terrain.hpp"
+#include "world/trail.hpp"
+
+namespace silva::world {
+
+/// Footprint radius of ground vegetation (grass, ferns) at scale 1, metres.
+inline constexpr float kGroundFootprint = 0.1f;
+
+/// The immutable inputs of world generation.
+struct WorldContext {
+  Config config;                               ///< Resolved config.
+  const assets::AssetLibrary* library = nullptr;  ///< Placeable assets (not owned).
+  TerrainField terrain;                        ///< Height function.
+  Trail trail;                                 ///< The trail (enabled = false when off).
+  std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
+  float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.
+  int neighbour_ring = 1;                      ///< Chunks on each side whose candidates can touch a chunk's.
+  /// Chunk edge length (terrain.chunk_size), metres.
+  double chunk_size() const { return config.terrain.chunk_size; }
+};
+
+/// Builds the context; throws InputError when chunk_size is not a whole multiple of
+/// vertex_spacing and grid_spacing, or when the trail does not fit the capture region.
+WorldContext make_world_context(const Config& cfg, const assets::AssetLibrary& library);
+
+}  // namespace silva::world

@@ -1,0 +1,104 @@
+#include "world/world_generator.hpp"
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "core/error.hpp"
+#include "core/instance_id.hpp"
+#include "world/terrain_lod.hpp"
+
+namespace silva::world {
+
+namespace {
+
+/// Seconds elapsed since t0.
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
+  uint32_t index = 0;
+  for (Vegetation& v : objects) {
+    if (!role_has_instances(v.role)) continue;
+    if (index >= kMaxObjectsPerChunk)
+      throw InputError("chunk (" + std::to_string(coord.i) + ", " + std::to_string(coord.j) + ") holds more than " +
+                       std::to_string(kMaxObjectsPerChunk) + " objects: lower vegetation.density");
+    v.instance_id = pack_instance_id(coord, index++);
+  }
+}
+
+ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ChunkTerrain out;
+  out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
+  out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
+  out.generate_s = since(t0);
+  return out;
+}
+
+ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                             const CandidateLookup& neighbours) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ChunkObjects out;
+  ResolveStats rs;
+  out.objects = resolve_chunk(ctx, coord, own, neighbours, rs);
+  assign_instance_ids(coord, out.objects);
+  auto& st = out.stats;
+  st.resolve_s = since(t0);
+  for (const Vegetation& v : out.objects) ++st.objects_by_role[size_t(v.role)];
+  st.candidates = uint32_t(own.solids.size() + own.ground.size());
+  st.trail_rejected = own.trail_rejected;
+  st.adjusted = rs.adjusted;
+  st.dropped = rs.dropped;
+  st.ground_dropped = rs.ground_dropped;
+  st.broad_queries = rs.broad_queries;
+  st.narrow_queries = rs.narrow_queries;
+  return out;
+}
+
+ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects) {
+  ChunkContent out;
+  out.coord = coord;
+  out.terrain = std::move(terrain.terrain);
+  out.trail = std::move(terrain.trail);
+  out.objects = std::move(objects.objects);
+  out.stats = objects.stats;
+  out.stats.generate_s = terrain.generate_s;
+  out.stats.triangles = out.terrain.triangle_count() + out.trail.triangle_count();
+  return out;
+}
+
+void add_terrain_level(ChunkContent& chunk) {
+  const auto t0 = std::chrono::steady_clock::now();
+  chunk.terrain_lod = build_terrain_lod(chunk.terrain);
+  chunk.terrain_bounds = chunk.terrain.bounds();
+  chunk.stats.generate_s += since(t0);
+}
+
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                            const CandidateLookup& neighbours) {
+  return assemble_chunk(coord, generate_terrain(ctx, coord), resolve_objects(ctx, coord, own, neighbours));
+}
+
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ChunkCandidates own = place_candidates(ctx, coord, true);
+  std::map<ChunkCoord, ChunkCandidates> around;
+  const int ring = ctx.neighbour_ring;
+  for (int dj = -ring; dj <= ring; ++dj)
+    for (int di = -ring; di <= ring; ++di)
+      if (di != 0 || dj != 0) {
+        const ChunkCoord n{coord.i + di, coord.j + dj};
+        around.emplace(n, place_candidates(ctx, n, false));
+      }
+  const double place_s = since(t0);
+  ChunkContent out = generate_chunk(ctx, coord, own, [&](ChunkCoord c) -> const ChunkCandidates& { return around.at(c); });
+  out.stats.place_s = place_s;
+  return out;
+}
+
+}  // namespace silva::world

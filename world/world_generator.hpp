@@ -1,0 +1,38 @@
+#pragma once
+/// @file The chunk generation façade: terrain + trail piece + placement + resolve of one chunk.
+#include "world/chunk_content.hpp"
+#include "world/placement.hpp"
+#include "world/resolve.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::world {
+
+/// Generates chunk `coord` completely (its neighbours' candidates are recomputed as needed).
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
+
+/// Generates chunk `coord` with candidates looked up (e.g. precomputed for a whole region);
+/// `own` must be place_candidates(ctx, coord, true). Same result as generate_chunk.
+ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                            const CandidateLookup& neighbours);
+
+/// Terrain and trail meshes of chunk `coord` (the Generate phase's work).
+ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord);
+
+/// Final objects of chunk `coord` with ids assigned and resolve counters (the Resolve phase's
+/// work); `own` must be place_candidates(ctx, coord, true).
+ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
+                             const CandidateLookup& neighbours);
+
+/// The content of a chunk from its phase outputs (meshes and objects are moved out); adds the
+/// triangle count and mesh time to the stats.
+ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects);
+
+/// Adds the coarse terrain level and the terrain bounds the renderer needs (made once per chunk
+/// that is drawn, not in every world generation; timed into stats.generate_s).
+void add_terrain_level(ChunkContent& chunk);
+
+/// Assigns packed instance ids to the things (roles with instances) in list order; stuff gets 0.
+/// Throws InputError when a chunk holds more than kMaxObjectsPerChunk things.
+void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects);
+
+}  // namespace silva::world
