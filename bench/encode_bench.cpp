@@ -16,6 +16,7 @@
 #include "io/exr_writer.hpp"
 #include "io/label_images.hpp"
 #include "io/png_writer.hpp"
+#include "render/gbuffer.hpp"
 
 namespace {
 

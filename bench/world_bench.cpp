@@ -58,7 +58,7 @@ void run_default_world(benchmark::State& state, const Config& cfg, int threads) 
   library();
   world::BuiltWorld w;
   for (auto _ : state) {
-    const world::BuiltWorldContext ctx = world::make_world_context(cfg, library());
+    const world::WorldContext ctx = world::make_world_context(cfg, library());
     w = app::build_default_world(ctx, threads);
     benchmark::DoNotOptimize(w.hash);
   }
@@ -117,7 +117,7 @@ void BM_PlaceResolve_OneCore(benchmark::State& state) {
   Config cfg;
   cfg.seed = kSeed;
   cfg.vegetation.density = double(state.range(0));
-  const world::BuiltWorldContext ctx = world::make_world_context(cfg, library());
+  const world::WorldContext ctx = world::make_world_context(cfg, library());
   const auto coords = world::chunks_in_disc(0, 0, 128, cfg.terrain.chunk_size);
   const int ring = ctx.neighbour_ring;
   uint64_t objects = 0;

@@ -51,11 +51,18 @@ void OrderedStage::submit(std::function<void()> parallel, std::function<void()> 
     try {
       j.parallel();
     } catch (...) {
-      const std::lock_guard lock(mutex_);
-      if (!error_) error_ = std::current_exception();
+      fail(j.seq, std::current_exception());
     }
     parallel_done(j);
   });
+}
+
+void OrderedStage::fail(std::uint64_t seq, std::exception_ptr error) {
+  const std::lock_guard lock(mutex_);
+  if (seq < failed_seq_) {
+    failed_seq_ = seq;
+    error_ = std::move(error);
+  }
 }
 
 void OrderedStage::parallel_done(Job& job) {
@@ -74,14 +81,12 @@ void OrderedStage::drain() {
     const auto it = std::find_if(jobs_.begin(), jobs_.end(), [&](const auto& j) { return j->seq == next_in_order_; });
     if (it == jobs_.end() || !(*it)->ready) break;
     Job& job = **it;
-    const bool skip = error_ != nullptr;
+    const bool skip = job.seq >= failed_seq_;
     lock.unlock();
     try {
       if (!skip) job.in_order();
     } catch (...) {
-      lock.lock();
-      if (!error_) error_ = std::current_exception();
-      lock.unlock();
+      fail(job.seq, std::current_exception());
     }
     lock.lock();
     job.finished = true;
@@ -112,6 +117,7 @@ void OrderedStage::finish() {
   {
     const std::lock_guard lock(mutex_);
     error = std::exchange(error_, nullptr);
+    failed_seq_ = UINT64_MAX;
   }
   if (error) std::rethrow_exception(error);
 }

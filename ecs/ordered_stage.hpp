@@ -24,9 +24,10 @@ class OrderedStage {
   OrderedStage& operator=(const OrderedStage&) = delete;
 
   /// Queues a job; while `limit` jobs are unfinished, first waits for the oldest (helping with
-  /// queued work meanwhile). After a job has failed, later in-order parts are skipped.
+  /// queued work meanwhile). Once a job has failed, its in-order part and every later one are
+  /// skipped; earlier jobs still finish.
   void submit(std::function<void()> parallel, std::function<void()> in_order);
-  /// Waits for every job; rethrows the first exception a part threw.
+  /// Waits for every job; rethrows the exception of the earliest failed job.
   void finish();
   /// Jobs submitted and not yet finished.
   std::size_t in_flight() const;
@@ -36,6 +37,7 @@ class OrderedStage {
  private:
   struct Job;
   void wait_oldest();
+  void fail(std::uint64_t seq, std::exception_ptr error);
   void parallel_done(Job& job);
   void drain();
 
@@ -46,7 +48,8 @@ class OrderedStage {
   std::uint64_t next_seq_ = 0;             // sequence number of the next submitted job
   std::uint64_t next_in_order_ = 0;        // sequence number whose in-order part runs next
   bool draining_ = false;                  // a thread is running in-order parts
-  std::exception_ptr error_;               // first failure
+  std::uint64_t failed_seq_ = UINT64_MAX;  // earliest failed job (UINT64_MAX: none)
+  std::exception_ptr error_;               // its exception
 };
 
 }  // namespace silva::ecs

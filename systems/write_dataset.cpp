@@ -23,11 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The planes the label encoders read, viewing `g`.
-io::LabelPlanes label_planes(const render::GBuffer& g) {
-  return {g.width, g.height, g.depth, g.normal, g.role, g.instance_id};
-}
-
 /// The camera record of a planned frame.
 io::CameraRecord camera_record(const world::PlannedFrame& f) {
   io::CameraRecord r;
@@ -87,6 +82,10 @@ void write_frame(const CaptureSettings& settings, const FrameWork& work, Dataset
 }
 
 }  // namespace
+
+io::LabelPlanes label_planes(const render::GBuffer& g) {
+  return {g.width, g.height, g.depth, g.normal, g.role, g.instance_id};
+}
 
 fs::path camera_file(const world::PlannedFrame& frame) {
   return fs::path(frame.sequence) / io::frame_file("camera", frame.frame, "json");

@@ -7,7 +7,9 @@
 
 #include "ecs/ordered_stage.hpp"
 #include "ecs/world.hpp"
+#include "io/label_planes.hpp"
 #include "io/output_types.hpp"
+#include "render/gbuffer.hpp"
 #include "world/plan_captures.hpp"
 
 namespace silva::systems {
@@ -43,6 +45,9 @@ struct DatasetWriter {
   ProgressFn progress;                       ///< Told after each frame (may be empty).
   int total = 0;                             ///< Frames the run captures (for progress).
 };
+
+/// The planes the label encoders read, viewing `g`.
+io::LabelPlanes label_planes(const render::GBuffer& g);
 
 /// Sequence-relative path of a frame's camera file, whose presence marks the frame complete.
 std::filesystem::path camera_file(const world::PlannedFrame& frame);

@@ -8,7 +8,7 @@
 
 #include "app/asset_files.hpp"
 #include "core/error.hpp"
-#include "mesh_checks.hpp"
+#include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
 using app::build_library;

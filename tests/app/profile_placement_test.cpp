@@ -6,6 +6,7 @@
 #include "app/profile_output.hpp"
 #include "app/profile_world.hpp"
 #include "app/run_setup.hpp"
+#include "app/schedule/world_schedule.hpp"
 #include "silva_process.hpp"
 #include "world/chunk_regions.hpp"
 
@@ -27,13 +28,13 @@ std::vector<ChunkCoord> small_region() { return world::chunks_in_disc(0, 0, 48, 
 /// A profiled small world at `density` and, independently built, the same world.
 struct Profiled {
   WorldProfile profile;
-  world::World world;
+  world::BuiltWorld world;
 };
 
 Profiled profiled(double density) {
   const LoadedConfig loaded = small_config(density);
   const RunSetup setup = make_run_setup(loaded);
-  return {profile_world(setup.world, small_region(), 2), world::build_world(setup.world, small_region(), 1)};
+  return {profile_world(setup.world, small_region(), 2), build_world(setup.world, small_region(), 1)};
 }
 
 TEST(ProfilePlacement, CountsMatchAnIndependentBuildOfTheSameWorld) {

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <set>
 
-#include "mesh_checks.hpp"
+#include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "assets/alpha_masks.hpp"
 #include "assets/mesh_builder.hpp"
-#include "mesh_checks.hpp"
+#include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
 namespace {

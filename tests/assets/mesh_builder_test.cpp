@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mesh_checks.hpp"
+#include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
 namespace {

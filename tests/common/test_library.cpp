@@ -1,5 +1,13 @@
 #include "tests/common/test_library.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "world/world_generator.hpp"
+
 #include <algorithm>
 
 namespace silva::test {
@@ -103,6 +111,17 @@ Config small_world_config(int64_t seed, double density) {
   cfg.trail.control_points = 12;
   cfg.trail.control_spacing = 10;
   return cfg;
+}
+
+world::BuiltWorld build_world(const world::WorldContext& ctx, std::vector<ChunkCoord> coords, int threads) {
+  std::sort(coords.begin(), coords.end());
+  coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
+  std::vector<ChunkContent> chunks(coords.size());
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    tbb::parallel_for(size_t(0), coords.size(), [&](size_t k) { chunks[k] = world::generate_chunk(ctx, coords[k]); });
+  });
+  return world::summarise_world(std::move(chunks));
 }
 
 }  // namespace silva::test

@@ -2,6 +2,8 @@
 // the class, instance and depth images of a constructed scene change at exactly the same pixels.
 #include <gtest/gtest.h>
 
+#include "systems/write_dataset.hpp"
+
 #include <cmath>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
@@ -48,7 +50,7 @@ TEST(CaptureAlignment, ClassInstanceAndDepthEdgesCoincide) {
   io::OutputSelection outputs;
   for (io::OutputType t : {io::OutputType::Semantic, io::OutputType::Instance, io::OutputType::Depth})
     outputs.enabled[size_t(t)] = true;
-  auto images = decode(io::encode_capture_set(g, {}, default_ontology(), outputs, 0));
+  auto images = decode(io::encode_capture_set(systems::label_planes(g), {}, default_ontology(), outputs, 0));
   const cv::Mat& semantic = images.at("semantic");
   const cv::Mat& instance = images.at("instance");
   const cv::Mat& depth = images.at("depth");

@@ -1,4 +1,4 @@
-#include "world/world_summary.hpp"
+#include "app/schedule/world_schedule.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,13 @@
 
 namespace silva::world {
 
+using app::build_default_world;
+using app::build_world;
+
 TEST(WorldBuild, SameSeedSameHashForOneAndTwoThreads) {
   const WorldContext ctx = make_world_context(test::small_world_config(77, 10), test::small_library());
-  const World one = build_default_world(ctx, 1);
-  const World two = build_default_world(ctx, 2);
+  const BuiltWorld one = build_default_world(ctx, 1);
+  const BuiltWorld two = build_default_world(ctx, 2);
   EXPECT_EQ(one.hash, two.hash);
   EXPECT_EQ(one.totals.objects, two.totals.objects);
   EXPECT_EQ(one.chunks.size(), default_world_chunks(ctx.config).size());
@@ -24,7 +27,7 @@ TEST(WorldBuild, SameSeedSameHashForOneAndTwoThreads) {
 TEST(WorldBuild, StreamingOrderEqualsAllAtOnce) {
   const WorldContext ctx = make_world_context(test::small_world_config(12, 5), test::small_library());
   std::vector<ChunkCoord> coords = chunks_in_disc(10, -5, 40, 32);
-  const World all = build_world(ctx, coords, 2);
+  const BuiltWorld all = build_world(ctx, coords, 2);
   // One chunk at a time, in a shuffled order, each generated on its own.
   std::vector<ChunkCoord> shuffled = coords;
   for (size_t k = shuffled.size(); k > 1; --k) {
@@ -42,16 +45,16 @@ TEST(WorldBuild, StreamingOrderEqualsAllAtOnce) {
 TEST(WorldBuild, DifferentSeedsDiffer) {
   const auto& lib = test::small_library();
   const std::vector<ChunkCoord> coords = {{0, 0}, {1, 0}};
-  const World a = build_world(make_world_context(test::small_world_config(1), lib), coords, 1);
-  const World b = build_world(make_world_context(test::small_world_config(2), lib), coords, 1);
-  const World a2 = build_world(make_world_context(test::small_world_config(1), lib), coords, 1);
+  const BuiltWorld a = build_world(make_world_context(test::small_world_config(1), lib), coords, 1);
+  const BuiltWorld b = build_world(make_world_context(test::small_world_config(2), lib), coords, 1);
+  const BuiltWorld a2 = build_world(make_world_context(test::small_world_config(1), lib), coords, 1);
   EXPECT_NE(a.hash, b.hash);
   EXPECT_EQ(a.hash, a2.hash);
 }
 
 TEST(WorldBuild, TotalsAddUp) {
   const WorldContext ctx = make_world_context(test::small_world_config(3, 25), test::small_library());
-  const World w = build_world(ctx, chunks_in_disc(0, 0, 30, 32), 2);
+  const BuiltWorld w = build_world(ctx, chunks_in_disc(0, 0, 30, 32), 2);
   uint64_t objects = 0, triangles = 0;
   for (const ChunkContent& c : w.chunks) {
     objects += c.objects.size();

@@ -24,7 +24,7 @@ size_t count_role(const ClassMap& map, const Ontology& ontology, Role role) {
 
 TEST(ClassMap, CoversTheChunksAndShowsTrailAndSolids) {
   const WorldContext ctx = make_world_context(test::small_world_config(5, 10), test::small_library());
-  const World w = build_world(ctx, chunks_in_disc(0, 0, 40, 32), 1);
+  const BuiltWorld w = test::build_world(ctx, chunks_in_disc(0, 0, 40, 32), 1);
   const Ontology ontology = default_ontology();
   const ClassMap map = render_class_map(w, 32, test::small_library(), ontology, 0.5);
   int i0 = 0, i1 = 0, j0 = 0, j1 = 0;

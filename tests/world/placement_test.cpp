@@ -6,7 +6,6 @@
 
 #include "world/chunk_regions.hpp"
 #include "world/class_mix.hpp"
-#include "world/world_summary.hpp"
 #include "tests/common/test_library.hpp"
 
 namespace silva::world {
@@ -58,7 +57,7 @@ TEST(Placement, NothingOnTheTrailCorridor) {
   for (int64_t seed : {1, 2, 3, 4}) {
     Config cfg = test::small_world_config(seed, 25);
     const WorldContext ctx = make_world_context(cfg, test::small_library());
-    const World w = build_default_world(ctx, 2);
+    const BuiltWorld w = test::build_world(ctx, default_world_chunks(ctx.config), 2);
     // Dense samples of the nav spline (10 cm apart), checked in the horizontal plane.
     std::vector<Eigen::Vector2d> samples;
     for (double s = 0; s <= ctx.trail.nav.length(); s += 0.1) samples.push_back(ctx.trail.nav.position(s).head<2>());
@@ -81,7 +80,7 @@ TEST(Placement, TreeCountGrowsWithDensity) {
   uint64_t last = 0;
   for (double d : {1.0, 5.0, 10.0, 20.0, 25.0}) {
     const WorldContext ctx = make_world_context(test::small_world_config(31, d), test::small_library());
-    const World w = build_world(ctx, chunks_in_disc(0, 0, 40, 32), 2);
+    const BuiltWorld w = test::build_world(ctx, chunks_in_disc(0, 0, 40, 32), 2);
     const uint64_t trees = w.totals.objects_by_role[size_t(Role::TreeTrunk)];
     EXPECT_GT(trees, last) << d;
     last = trees;
@@ -92,7 +91,7 @@ TEST(Placement, NoGroundVegetationWhenDisabled) {
   Config cfg = test::small_world_config(4);
   cfg.vegetation.ground = false;
   const WorldContext ctx = make_world_context(cfg, test::small_library());
-  const World w = build_world(ctx, {ChunkCoord{0, 0}, ChunkCoord{1, 1}}, 1);
+  const BuiltWorld w = test::build_world(ctx, {ChunkCoord{0, 0}, ChunkCoord{1, 1}}, 1);
   EXPECT_EQ(w.totals.objects_by_role[size_t(Role::GroundVegetation)], 0u);
   EXPECT_GT(w.totals.objects, 0u);
 }

@@ -178,11 +178,11 @@ TEST(PlanCaptures, RandomPosesDependOnlyOnSeedAndFrame) {
 TEST(PlanCaptures, CustomPosesKeepFileOrderAndDropToTheGroundWithoutZ) {
   const Config cfg = test::small_world_config(3);
   const WorldContext ctx = make_world_context(cfg, test::small_library());
-  io::PoseEntry with_z;
+  PoseEntry with_z;
   with_z.position = Vec3d(1, 2, 30);
   with_z.yaw_deg = 10;
   with_z.rotation = rotation_from_angles(10, 0, 0);
-  io::PoseEntry without_z;
+  PoseEntry without_z;
   without_z.position = Vec3d(-5, 4, 0);
   without_z.has_z = false;
   const auto frames = plan_custom(ctx, {with_z, without_z});

@@ -7,7 +7,6 @@
 #include <memory>
 
 #include "world/collision_proxy.hpp"
-#include "world/world_summary.hpp"
 #include "tests/common/test_library.hpp"
 
 namespace silva::world {
@@ -15,7 +14,7 @@ namespace silva::world {
 namespace {
 
 /// Number of colliding pairs among the solid proxies of a world, found by FCL's own broad phase.
-size_t fcl_collisions(const WorldContext& ctx, const World& w) {
+size_t fcl_collisions(const WorldContext& ctx, const BuiltWorld& w) {
   std::vector<std::unique_ptr<fcl::CollisionObjectf>> objects;
   for (const ChunkContent& c : w.chunks)
     for (const Vegetation& v : c.objects) {
@@ -45,7 +44,7 @@ TEST(Resolve, NoSolidProxiesCollideAfterResolve) {
   for (double density : {1.0, 5.0, 25.0}) {
     for (int64_t seed : {1, 2, 3}) {
       const WorldContext ctx = make_world_context(test::small_world_config(seed, density), test::small_library());
-      const World w = build_world(ctx, {{-1, -1}, {-1, 0}, {0, -1}, {0, 0}, {1, 0}, {0, 1}}, 2);
+      const BuiltWorld w = test::build_world(ctx, {{-1, -1}, {-1, 0}, {0, -1}, {0, 0}, {1, 0}, {0, 1}}, 2);
       EXPECT_EQ(fcl_collisions(ctx, w), 0u) << "seed " << seed << " density " << density;
       if (density == 25.0) {
         EXPECT_GT(w.totals.adjusted, 0u);
@@ -57,7 +56,7 @@ TEST(Resolve, NoSolidProxiesCollideAfterResolve) {
 
 TEST(Resolve, MovedObjectsStayWellInsideTheirChunk) {
   const WorldContext ctx = make_world_context(test::small_world_config(5, 25), test::small_library());
-  const World w = build_world(ctx, {{0, 0}, {1, 0}, {0, 1}, {1, 1}}, 2);
+  const BuiltWorld w = test::build_world(ctx, {{0, 0}, {1, 0}, {0, 1}, {1, 1}}, 2);
   size_t moved = 0;
   for (const ChunkContent& c : w.chunks)
     for (const Vegetation& v : c.objects) {
@@ -77,7 +76,7 @@ TEST(Resolve, MovedObjectsStayWellInsideTheirChunk) {
 
 TEST(Resolve, GroundVegetationAvoidsSolids) {
   const WorldContext ctx = make_world_context(test::small_world_config(6, 20), test::small_library());
-  const World w = build_world(ctx, {{0, 0}, {1, 0}}, 1);
+  const BuiltWorld w = test::build_world(ctx, {{0, 0}, {1, 0}}, 1);
   std::vector<const Vegetation*> solids, ground;
   for (const ChunkContent& c : w.chunks)
     for (const Vegetation& v : c.objects) (v.role == Role::GroundVegetation ? ground : solids).push_back(&v);
@@ -93,7 +92,7 @@ TEST(Resolve, GroundVegetationAvoidsSolids) {
 
 TEST(Resolve, InstanceIdsArePackedAndUnique) {
   const WorldContext ctx = make_world_context(test::small_world_config(7, 10), test::small_library());
-  const World w = build_world(ctx, {{-3, 2}}, 1);
+  const BuiltWorld w = test::build_world(ctx, {{-3, 2}}, 1);
   uint32_t next = 1;
   for (const Vegetation& v : w.chunks[0].objects) {
     if (!role_has_instances(v.role)) {
