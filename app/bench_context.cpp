@@ -38,7 +38,7 @@ std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg
   const std::vector<ChunkCoord> coords = world::default_world_chunks(cfg);
   auto w = std::unique_ptr<WarmWorld>(new WarmWorld{world::make_world_context(cfg, *ctx.setup.library), nullptr});
   w->schedule = std::make_unique<WorldSchedule>(w->world, coords.size() + 16);
-  w->objects = w->schedule->build(coords, true).totals.objects;
+  w->objects = w->schedule->warm(coords).objects;
   w->build_s = seconds_since(t0);
   return w;
 }

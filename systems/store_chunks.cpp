@@ -30,7 +30,7 @@ void store(ecs::SystemContext& sys) {
   const bool drawn = !sys.resource<const CaptureQueue>().active.is_null() || sys.resource<const PinnedChunks>().for_drawing;
   if (drawn)
     tbb::parallel_for(size_t(0), done.size(), [&](size_t k) { world::add_terrain_level(*done[k]); });
-  sys.resource<world::ChunkCache>().insert({done.begin(), done.end()});
+  sys.resource<world::ChunkCache>().insert(std::move(done));
 }
 
 }  // namespace

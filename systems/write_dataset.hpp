@@ -14,7 +14,7 @@
 
 namespace silva::systems {
 
-/// Frames in flight at once (shading/encoding and writing while the next one renders).
+/// Frames alive at once: the one rendering plus those shading, encoding and writing.
 inline constexpr size_t kFramesInFlight = 3;
 
 /// Counts and per-step wall times of a capture run (seconds summed over frames).
@@ -40,7 +40,7 @@ using ProgressFn = std::function<void(int done, int total)>;
 
 /// Resource: the ordered stage that shades, encodes and writes frames, and what it has done.
 struct DatasetWriter {
-  ecs::OrderedStage stage{kFramesInFlight};  ///< Parallel shade + encode, then in-order writes.
+  ecs::OrderedStage stage{kFramesInFlight - 1};  ///< Parallel shade + encode, then in-order writes.
   CaptureStats stats;                        ///< Updated by the in-order part of each frame.
   ProgressFn progress;                       ///< Told after each frame (may be empty).
   int total = 0;                             ///< Frames the run captures (for progress).
@@ -60,7 +60,7 @@ void create_output_folders(const std::filesystem::path& run_dir, const std::vect
 /// progress and total before the frames run): hands FrameSlots::current to the writer's stage:
 /// RGB shading and encoding in parallel, then the frame's files written atomically in frame order,
 /// its camera JSON last (its presence marks the frame complete). Waits for the oldest frame when
-/// kFramesInFlight are unfinished.
+/// kFramesInFlight - 1 are unfinished, so at most kFramesInFlight frames hold buffers.
 void install_write_dataset(ecs::World& world);
 
 }  // namespace silva::systems

@@ -22,9 +22,9 @@ ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord) {
 std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::require(const WorldContext& ctx,
                                                                      const std::vector<ChunkCoord>& coords) {
   const std::vector<ChunkCoord> todo = missing(coords);
-  std::vector<std::shared_ptr<const ChunkContent>> fresh(todo.size());
+  std::vector<std::shared_ptr<ChunkContent>> fresh(todo.size());
   tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) {
-    fresh[k] = std::make_shared<const ChunkContent>(drawable_chunk(ctx, todo[k]));
+    fresh[k] = std::make_shared<ChunkContent>(drawable_chunk(ctx, todo[k]));
   });
   insert(std::move(fresh));
   return take(coords);
@@ -39,7 +39,7 @@ std::vector<ChunkCoord> ChunkCache::missing(const std::vector<ChunkCoord>& coord
   return out;
 }
 
-void ChunkCache::insert(std::vector<std::shared_ptr<const ChunkContent>> chunks) {
+void ChunkCache::insert(std::vector<std::shared_ptr<ChunkContent>> chunks) {
   for (auto& chunk : chunks) {
     const ChunkCoord c = chunk->coord;
     if (map_.count(c)) continue;
@@ -62,6 +62,19 @@ std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::take(const std::vec
   while (map_.size() > keep) {
     map_.erase(lru_.back());
     lru_.pop_back();
+  }
+  return out;
+}
+
+std::vector<ChunkContent> ChunkCache::release(const std::vector<ChunkCoord>& coords) {
+  std::vector<ChunkContent> out;
+  out.reserve(coords.size());
+  for (ChunkCoord c : coords) {
+    const auto it = map_.find(c);
+    std::shared_ptr<ChunkContent> content = std::move(it->second.content);
+    lru_.erase(it->second.position);
+    map_.erase(it);
+    out.push_back(content.use_count() == 1 ? std::move(*content) : *content);
   }
   return out;
 }

@@ -27,7 +27,10 @@ class ChunkCache {
   /// The chunks of `coords` that are not present, sorted and unique.
   std::vector<ChunkCoord> missing(const std::vector<ChunkCoord>& coords) const;
   /// Adds generated chunks (absent ones; each counts as generated) as the most recently used.
-  void insert(std::vector<std::shared_ptr<const ChunkContent>> chunks);
+  void insert(std::vector<std::shared_ptr<ChunkContent>> chunks);
+  /// Removes the chunks of `coords` (all present) and returns their contents in that order,
+  /// moved out when nothing else holds them.
+  std::vector<ChunkContent> release(const std::vector<ChunkCoord>& coords);
   /// Marks every chunk of `coords` (all present) most recently used in the given order, evicts
   /// the least recently used beyond capacity (never one of `coords`) and returns their contents
   /// in the order of `coords`. Throws std::out_of_range for a chunk that is not present.
@@ -57,7 +60,7 @@ class ChunkCache {
 
  private:
   struct Entry {
-    std::shared_ptr<const ChunkContent> content;
+    std::shared_ptr<ChunkContent> content;
     std::list<ChunkCoord>::iterator position;
   };
   size_t capacity_;

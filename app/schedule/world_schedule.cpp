@@ -107,21 +107,38 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   return stats;
 }
 
-world::BuiltWorld WorldSchedule::build(std::vector<ChunkCoord> coords, bool for_drawing) {
+namespace {
+/// `coords` sorted, without repeats.
+std::vector<ChunkCoord> sorted_unique(std::vector<ChunkCoord> coords) {
   std::sort(coords.begin(), coords.end());
   coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
+  return coords;
+}
+}  // namespace
+
+void WorldSchedule::stream_pinned(const std::vector<ChunkCoord>& coords, bool for_drawing) {
   world_.resource<CaptureQueue>() = CaptureQueue{};
   world_.resource<PinnedChunks>() = PinnedChunks{coords, for_drawing};
   world_.run_phases(Phase::Stream, Phase::Write);
   world_.resource<PinnedChunks>() = PinnedChunks{};
-  const world::ChunkCache& cache = world_.resource<world::ChunkCache>();
-  std::vector<ChunkContent> chunks;
-  chunks.reserve(coords.size());
-  for (ChunkCoord c : coords) chunks.push_back(*cache.find(c));
-  world::BuiltWorld w = world::summarise_world(std::move(chunks));
+}
+
+world::BuiltWorld WorldSchedule::build(std::vector<ChunkCoord> coords) {
+  coords = sorted_unique(std::move(coords));
+  stream_pinned(coords, false);
+  world::BuiltWorld w = world::summarise_world(world_.resource<world::ChunkCache>().release(coords));
   w.totals.place_s = last_seconds({"place_vegetation"});
   w.totals.chunks_s = last_seconds({"generate_terrain", "resolve_overlaps"});
   return w;
+}
+
+world::WorldTotals WorldSchedule::warm(std::vector<ChunkCoord> coords) {
+  coords = sorted_unique(std::move(coords));
+  stream_pinned(coords, true);
+  world::WorldTotals totals;
+  const world::ChunkCache& cache = world_.resource<world::ChunkCache>();
+  for (ChunkCoord c : coords) world::accumulate(totals, cache.find(c)->stats);
+  return totals;
 }
 
 world::BuiltWorld build_world(const world::WorldContext& ctx, std::vector<ChunkCoord> coords, int threads) {

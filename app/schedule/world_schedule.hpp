@@ -35,9 +35,13 @@ class WorldSchedule {
   systems::CaptureStats capture(const std::vector<world::PlannedFrame>& frames, systems::CaptureSettings settings,
                                 const systems::ProgressFn& progress, const std::function<bool()>& stop);
 
-  /// Runs one schedule frame with `coords` pinned and no camera, and returns those chunks (with
-  /// their coarse terrain level when `for_drawing`, as views need them).
-  world::BuiltWorld build(std::vector<ChunkCoord> coords, bool for_drawing = false);
+  /// Runs one schedule frame with `coords` pinned and no camera, and returns those chunks (moved
+  /// out of the chunk cache).
+  world::BuiltWorld build(std::vector<ChunkCoord> coords);
+
+  /// Runs one schedule frame with `coords` pinned and no camera, leaving the chunks in the cache
+  /// ready for views (with their coarse terrain level); returns their totals (timings left zero).
+  world::WorldTotals warm(std::vector<ChunkCoord> coords);
 
   /// The ECS world (its resources, entities and system timings).
   ecs::World& ecs() { return world_; }
@@ -45,6 +49,8 @@ class WorldSchedule {
  private:
   /// Seconds of the latest call of the systems named.
   double last_seconds(std::initializer_list<const char*> names) const;
+  /// Runs one schedule frame streaming the sorted, unique `coords` and no camera.
+  void stream_pinned(const std::vector<ChunkCoord>& coords, bool for_drawing);
   /// Fills the CaptureQueue with the camera entities of `frames`.
   void queue_cameras(const std::vector<world::PlannedFrame>& frames);
 

@@ -53,13 +53,17 @@ TEST(Schedule, BuildEqualsTheLibraryAndLeavesNoChunkEntities) {
   EXPECT_GT(built.totals.objects, 100u);
   EXPECT_EQ(schedule.ecs().view<const Chunk>().size_hint(), 0u);  // work entities despawned
   for (const ChunkContent& c : built.chunks) EXPECT_TRUE(c.terrain_lod.positions.empty());  // not for drawing
+  EXPECT_EQ(schedule.ecs().resource<world::ChunkCache>().size(), 0u);  // moved out of the cache
 }
 
 TEST(Schedule, ChunksBuiltForDrawingCarryTheirCoarseTerrain) {
   const world::WorldContext ctx = walk_context();
   WorldSchedule schedule(ctx, 8);
-  const world::BuiltWorld built = schedule.build({{0, 0}, {1, 0}}, true);
-  for (const ChunkContent& c : built.chunks) {
+  EXPECT_EQ(schedule.warm({{1, 0}, {0, 0}, {1, 0}}).chunks, 2u);
+  const world::ChunkCache& cache = schedule.ecs().resource<world::ChunkCache>();
+  for (ChunkCoord coord : {ChunkCoord{0, 0}, ChunkCoord{1, 0}}) {
+    ASSERT_NE(cache.find(coord), nullptr);
+    const ChunkContent& c = *cache.find(coord);
     ChunkContent fresh = world::generate_chunk(ctx, c.coord);
     world::add_terrain_level(fresh);
     EXPECT_EQ(c.terrain_lod.positions, fresh.terrain_lod.positions);
