@@ -4,17 +4,24 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 SILVA      := $(BUILD)/silva
 
-.PHONY: deps build run test bench sanitize tidy test-slurm check-export clean
+.PHONY: deps configure build cli run test bench sanitize tidy test-slurm check-export clean
 
 deps:
 	@bash scripts/install-deps.sh
 
-build: deps
+configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
+
+## make build: every target (the CLI, the asset library, the tests and the benchmarks)
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-## make run: build Release and generate the demo dataset of configs/demo.toml into ./out/
-run: build
+## make cli: only the silva CLI (its post-build step generates the asset library); no test or benchmark
+cli: configure
+	@cmake --build $(BUILD) --target silva -j $(JOBS)
+
+## make run: build the Release CLI only and generate the demo dataset of configs/demo.toml into ./out/
+run: cli
 	$(SILVA) generate --config configs/demo.toml --overwrite
 	@echo "The demo dataset is in out/1234567890/ (rgb/, semantic/, depth/, ... per sequence; see README.md)."
 	@echo "The full thesis default is '$(SILVA) generate': 790 captures at 1920x1080, several GB."
@@ -45,7 +52,7 @@ tidy:
 
 ## make test-slurm: a throw-away single-node Slurm cluster here (root or sudo); checks that a
 ## 2-shard job array + silva merge equals a single-process run byte for byte
-test-slurm: build
+test-slurm: cli
 	SILVA=$(SILVA) bash scripts/test-slurm.sh
 
 clean:

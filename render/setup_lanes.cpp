@@ -101,6 +101,31 @@ M in_frustum(D d, const SetupView& sv, const V3<V>& p0, const V3<V>& p1, const V
   return alive;
 }
 
+/// Alpha planes of every lane into L.tex (ViewProjection::barycentric_planes, then
+/// triangle_setup.cpp's texcoord_plane), from vertex 0 and the edges e1 = p1 - p0, e2 = p2 - p0.
+template <class D, class V>
+HWY_INLINE void store_alpha_planes(D d, const PixelScales& sc, const V3<V>& p0, const V3<V>& e1, const V3<V>& e2,
+                                   Lanes& L) {
+  const V3<V> o{hn::Neg(p0.x), hn::Neg(p0.y), hn::Neg(p0.z)};
+  const auto q1 = cross_lanes(e2, o), q2 = cross_lanes(o, e1), qd = cross_lanes(e2, e1);
+  HWY_ALIGN double bary[3][3][kMaxLanes];  // n1, n2, den
+  const V3<V>* qs[3] = {&q1, &q2, &qd};
+  for (int k = 0; k < 3; ++k) {
+    const auto& q = *qs[k];
+    const auto a = hn::Mul(q.x, hn::Set(d, sc.inv_fx)), b = hn::Mul(q.y, hn::Set(d, sc.inv_fy));
+    store_pixel_plane(d, hn::Sub(hn::Sub(q.z, hn::Mul(q.x, hn::Set(d, sc.cx_fx))), hn::Mul(q.y, hn::Set(d, sc.cy_fy))), a, b, bary[k]);
+  }
+  for (int axis = 0; axis < 2; ++axis) {
+    const auto t0 = hn::Load(d, L.uv[0][axis]);
+    const auto k1 = hn::Sub(hn::Load(d, L.uv[1][axis]), t0), k2 = hn::Sub(hn::Load(d, L.uv[2][axis]), t0);
+    for (int f = 0; f < 3; ++f)
+      hn::Store(hn::Add(hn::Add(hn::Mul(t0, hn::Load(d, bary[2][f])), hn::Mul(k1, hn::Load(d, bary[0][f]))),
+                        hn::Mul(k2, hn::Load(d, bary[1][f]))),
+                d, L.tex[axis][f]);
+  }
+  for (int f = 0; f < 3; ++f) hn::Store(hn::Load(d, bary[2][f]), d, L.tex[2][f]);
+}
+
 /// Sets up the lanes of one group (inputs filled): every result array and the two masks; with
 /// `frustum_test`, triangles wholly behind a frustum plane are dropped first (not counted).
 void setup_group(const SetupView& sv, bool cull_back, bool masked, bool frustum_test, size_t n, Lanes& L) {
@@ -163,27 +188,7 @@ void setup_group(const SetupView& sv, bool cull_back, bool masked, bool frustum_
                             hn::Mul(hn::Abs(db), hn::Set(d, double(view.height))));
   hn::Store(hn::Add(hn::Add(hn::Add(vmax, hn::Abs(da)), hn::Abs(db)), hn::Mul(hn::Set(d, 1e-9), hn::Add(span, hn::Abs(vmax)))), d,
             L.depth_max);
-  if (!masked) return;
-
-  // Alpha planes (ViewProjection::barycentric_planes, then triangle_setup.cpp's texcoord_plane).
-  const V3<hn::Vec<DTag>> o{hn::Neg(p0.x), hn::Neg(p0.y), hn::Neg(p0.z)};
-  const auto q1 = cross_lanes(e2, o), q2 = cross_lanes(o, e1), qd = cross_lanes(e2, e1);
-  HWY_ALIGN double bary[3][3][kMaxLanes];  // n1, n2, den
-  const V3<hn::Vec<DTag>>* qs[3] = {&q1, &q2, &qd};
-  for (int k = 0; k < 3; ++k) {
-    const auto& q = *qs[k];
-    const auto a = hn::Mul(q.x, hn::Set(d, sc.inv_fx)), b = hn::Mul(q.y, hn::Set(d, sc.inv_fy));
-    store_pixel_plane(d, hn::Sub(hn::Sub(q.z, hn::Mul(q.x, hn::Set(d, sc.cx_fx))), hn::Mul(q.y, hn::Set(d, sc.cy_fy))), a, b, bary[k]);
-  }
-  for (int axis = 0; axis < 2; ++axis) {
-    const auto t0 = hn::Load(d, L.uv[0][axis]);
-    const auto k1 = hn::Sub(hn::Load(d, L.uv[1][axis]), t0), k2 = hn::Sub(hn::Load(d, L.uv[2][axis]), t0);
-    for (int f = 0; f < 3; ++f)
-      hn::Store(hn::Add(hn::Add(hn::Mul(t0, hn::Load(d, bary[2][f])), hn::Mul(k1, hn::Load(d, bary[0][f]))),
-                        hn::Mul(k2, hn::Load(d, bary[1][f]))),
-                d, L.tex[axis][f]);
-  }
-  for (int f = 0; f < 3; ++f) hn::Store(hn::Load(d, bary[2][f]), d, L.tex[2][f]);
+  if (masked) store_alpha_planes(d, sc, p0, e1, e2, L);
 }
 
 /// setup_triangles_lanes for one target.

@@ -67,6 +67,28 @@ struct SharedPlanes {
   uint32_t alpha = kNoAlpha;  ///< AlphaAttrib index.
 };
 
+/// Fills `shared` for the source triangle `in` (face normal n): its depth plane, the conservative
+/// maximum of depth over it, and for masked parts its alpha planes (appended to `alphas`).
+void compute_shared_planes(const SetupView& sv, const TriangleInput& in, const Vec3d& n, double vertex_depth_max,
+                           std::vector<AlphaAttrib>& alphas, SharedPlanes& shared) {
+  const ViewProjection& view = sv.view;
+  const Vec3d& p0 = in.v[0]->p;
+  shared.ready = true;
+  shared.depth = view.depth_plane(p0, n, sv.scales);
+  const PixelPlane& d = shared.depth;
+  const double span = std::abs(d.c) + std::abs(d.a) * double(view.width) + std::abs(d.b) * double(view.height);
+  shared.depth_max = vertex_depth_max + std::abs(d.a) + std::abs(d.b) + 1e-9 * (span + std::abs(vertex_depth_max));
+  if (!in.mask) return;
+  shared.alpha = uint32_t(alphas.size());
+  AlphaAttrib& at = alphas.emplace_back();
+  PixelPlane n1, n2;
+  view.barycentric_planes(p0, in.v[1]->p, in.v[2]->p, sv.scales, n1, n2, at.w);
+  const Vec2f &uv0 = *in.uv[0], &uv1 = *in.uv[1], &uv2 = *in.uv[2];
+  at.u = texcoord_plane(n1, n2, at.w, uv0.x(), uv1.x(), uv2.x());
+  at.v = texcoord_plane(n1, n2, at.w, uv0.y(), uv1.y(), uv2.y());
+  at.bits = in.mask;
+}
+
 }  // namespace
 
 void project_vertex(const ViewProjection& view, SetupVertex& v) {
@@ -147,23 +169,7 @@ int setup_triangle(const SetupView& sv, const TriangleInput& in, std::vector<Ras
     if (x0 > x1 || y0 > y1) continue;  // covers no sample centre
     const EdgeFunction edge[3] = {edge_function(a, b), edge_function(b, c), edge_function(c, a)};
     if (x0 == x1 && y0 == y1 && !covers(edge, int(x0), int(y0))) continue;  // one candidate, missed
-    if (!shared.ready) {
-      shared.ready = true;
-      shared.depth = view.depth_plane(p0, n, sv.scales);
-      const PixelPlane& d = shared.depth;
-      const double span = std::abs(d.c) + std::abs(d.a) * double(view.width) + std::abs(d.b) * double(view.height);
-      shared.depth_max = vertex_depth_max + std::abs(d.a) + std::abs(d.b) + 1e-9 * (span + std::abs(vertex_depth_max));
-      if (in.mask) {
-        shared.alpha = uint32_t(alphas.size());
-        AlphaAttrib& at = alphas.emplace_back();
-        PixelPlane n1, n2;
-        view.barycentric_planes(p0, p1, p2, sv.scales, n1, n2, at.w);
-        const Vec2f &uv0 = *in.uv[0], &uv1 = *in.uv[1], &uv2 = *in.uv[2];
-        at.u = texcoord_plane(n1, n2, at.w, uv0.x(), uv1.x(), uv2.x());
-        at.v = texcoord_plane(n1, n2, at.w, uv0.y(), uv1.y(), uv2.y());
-        at.bits = in.mask;
-      }
-    }
+    if (!shared.ready) compute_shared_planes(sv, in, n, vertex_depth_max, alphas, shared);
     tris.push_back(RasterTri{{edge[0], edge[1], edge[2]}, shared.depth, in.key, shared.alpha});
     bounds[emitted++] = TriBounds{int32_t(x0), int32_t(y0), int32_t(x1), int32_t(y1), shared.depth_max};
   }
