@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "app/config_loader.hpp"
-#include "app/profile_output.hpp"
-#include "app/profile_world.hpp"
-#include "app/run_setup.hpp"
+#include "app/config/config_loader.hpp"
+#include "app/config/run_setup.hpp"
+#include "bench/harness/profile_output.hpp"
+#include "bench/harness/profile_world.hpp"
 #include "silva_process.hpp"
 #include "systems/chunk_regions.hpp"
 
