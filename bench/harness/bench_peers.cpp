@@ -19,7 +19,8 @@ std::string not_built_note(const std::string& error) {
   const size_t at = error.find(marker);
   if (at == std::string::npos) return "not built: " + error;
   const size_t end = error.find(')', at);
-  const std::string packages = error.substr(at + marker.size(), end == std::string::npos ? end : end - at - marker.size());
+  const size_t from = at + marker.size();
+  const std::string packages = error.substr(from, end == std::string::npos ? end : end - from);
   std::string why = error.substr(0, at);
   while (!why.empty() && (why.back() == ' ' || why.back() == ':')) why.pop_back();
   return "not built: install " + packages + " and rebuild (" + why + ")";
@@ -96,7 +97,10 @@ nlohmann::json run_peers_bench(const fs::path& program) {
   const nlohmann::json doc = nlohmann::json::parse(out, nullptr, /*allow_exceptions=*/false);
   if (status != 0 || !doc.is_object() || !doc.contains("benchmarks"))
     return {{"ran", false}, {"note", program.string() + " failed (exit status " + std::to_string(status) + ")"}};
-  return {{"ran", true}, {"program", program.string()}, {"wall_s", seconds_since(t0)}, {"benchmarks", annotate(doc["benchmarks"])}};
+  return {{"ran", true},
+          {"program", program.string()},
+          {"wall_s", seconds_since(t0)},
+          {"benchmarks", annotate(doc["benchmarks"])}};
 }
 
 }  // namespace silva::app

@@ -23,8 +23,8 @@ std::filesystem::path silva_binary_path();
 std::vector<std::string> whole_process_args(const BenchPlan& plan, int threads);
 
 /// Runs `silva` with whole_process_args `runs` times (stdout and stderr discarded) and returns
-/// {"ran": true, "command", "runs", "wall_s" (median), "min_s", "max_s", "cpu_s" and "max_rss_mib"
-/// (of the median run)}, or {"ran": false, "note": why} when `silva` is "" or a run fails.
+/// {"ran": true, "command", "runs", "wall_s" (median), "min_s", "max_s", "cpu_s" (of the median
+/// run)}, or {"ran": false, "note": why} when `silva` is "" or a run fails.
 nlohmann::json time_whole_process(const std::filesystem::path& silva, const BenchPlan& plan, int threads,
                                   int runs = kProcessRuns);
 
