@@ -1,7 +1,6 @@
 /// @file Embree 3 visibility peer (see peer_embree.hpp).
 #include "bench/peer_embree.hpp"
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -9,6 +8,8 @@
 #include <embree3/rtcore.h>
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
+
+#include "core/stopwatch.hpp"
 
 namespace silva::bench {
 
@@ -88,7 +89,7 @@ struct EmbreePeer::Impl {
 
   /// Builds every BVH.
   void build() {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch clock;
     device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("embree peer: rtcNewDevice failed");
     const render::Scene& scene = *view.scene;
@@ -106,7 +107,7 @@ struct EmbreePeer::Impl {
     }
     rtcCommitScene(top);
     check(device, true, "top-level BVH build");
-    setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    setup_ms = 1000 * clock.seconds();
   }
 
   /// Traces the rays of one kPacket x kPacket block whose upper-left pixel is (x0, y0).

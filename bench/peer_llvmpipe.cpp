@@ -1,7 +1,6 @@
 /// @file Mesa llvmpipe visibility peer (see peer_llvmpipe.hpp).
 #include "bench/peer_llvmpipe.hpp"
 
-#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -12,6 +11,8 @@
 #include <EGL/eglext.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+
+#include "core/stopwatch.hpp"
 
 namespace silva::bench {
 
@@ -264,10 +265,10 @@ struct LlvmpipePeer::Impl {
 
 LlvmpipePeer::LlvmpipePeer(const PeerView& view, int lp_threads) : impl_(std::make_unique<Impl>()) {
   impl_->view = view;
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   impl_->create_context(lp_threads);
   impl_->upload();
-  impl_->setup_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  impl_->setup_ms = 1000 * clock.seconds();
 }
 
 LlvmpipePeer::~LlvmpipePeer() {

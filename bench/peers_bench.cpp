@@ -11,7 +11,6 @@
 // Setup (BVH build, context + upload) is timed apart from the warm per-frame time.
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -20,6 +19,7 @@
 
 #include "bench/bench_views.hpp"
 #include "bench/default_view.hpp"
+#include "core/stopwatch.hpp"
 #include "render/renderer.hpp"
 #ifdef SILVA_PEER_EMBREE
 #include "bench/peer_embree.hpp"
@@ -37,11 +37,6 @@ using namespace silva::bench;
 constexpr double kDepthTolerance = 1e-3;
 /// Smallest fraction of agreeing pixels the cross-check accepts (instance; depth of common hits).
 constexpr double kMinAgreement = 0.99;
-
-/// Milliseconds since `t0`.
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// Work counts and times every benchmark reports.
 void report(benchmark::State& state, const BenchView& v, double setup_ms, double cold_ms) {
@@ -106,9 +101,9 @@ void BM_Silva(benchmark::State& state) {
   const render::RenderOptions opt = v.options();
   render::RenderStats stats;
   const auto frame = [&] { arena.execute([&] { renderer.render_visibility(*v.silva_scene, *v.peers.camera, opt, &stats); }); };
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   frame();
-  const double cold_ms = ms_since(t0);
+  const double cold_ms = 1000 * seconds_since(t0);
   for (auto _ : state) frame();
   report(state, v, 0.0, cold_ms);
   state.counters["tri_submitted"] = double(stats.triangles_submitted);
@@ -123,9 +118,9 @@ void llvmpipe(benchmark::State& state, [[maybe_unused]] bool readback) {
   const BenchView v = bench_view(state.range(0));
   const int lp_threads = state.range(1) == 1 ? 0 : int(state.range(1));
   LlvmpipePeer peer(v.peers, lp_threads);
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   peer.render(readback);
-  const double cold_ms = ms_since(t0);
+  const double cold_ms = 1000 * seconds_since(t0);
   for (auto _ : state) peer.render(readback);
   report(state, v, peer.setup_ms(), cold_ms);
   state.counters["lp_num_threads"] = lp_threads;
@@ -152,9 +147,9 @@ void BM_Embree(benchmark::State& state) {
   arena.execute([&] { peer = std::make_unique<EmbreePeer>(v.peers); });
   PeerFrame out;
   const auto frame = [&] { arena.execute([&] { peer->render(out); }); };
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = SteadyClock::now();
   frame();
-  const double cold_ms = ms_since(t0);
+  const double cold_ms = 1000 * seconds_since(t0);
   for (auto _ : state) frame();
   report(state, v, peer->setup_ms(), cold_ms);
   cross_check(state, out, "Embree");

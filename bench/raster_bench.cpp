@@ -6,12 +6,12 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include <tbb/task_arena.h>
 
 #include "bench/bench_views.hpp"
+#include "core/stopwatch.hpp"
 #include "render/raster_conventions.hpp"
 #include "render/renderer.hpp"
 
@@ -64,9 +64,9 @@ void run(benchmark::State& state, bool gbuffer) {
       }
     });
   };
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   frame();  // cold: first frame grows every buffer
-  const double cold_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const double cold_ms = 1000 * clock.seconds();
   for (auto _ : state) frame();
   report(state, stats, double(camera.width) * double(camera.height), cold_ms);
   if (!gbuffer) state.counters["tri_visible"] = visible_triangles(renderer.render_visibility(scene, camera, opt));

@@ -1,4 +1,4 @@
-#include "app/bench_compare.hpp"
+#include "bench/harness/bench_compare.hpp"
 
 #include <gtest/gtest.h>
 

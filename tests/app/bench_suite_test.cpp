@@ -1,11 +1,11 @@
-#include "app/bench_suite.hpp"
+#include "bench/harness/bench_suite.hpp"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
-#include "app/bench_machine.hpp"
-#include "app/bench_report.hpp"
+#include "bench/harness/bench_machine.hpp"
+#include "bench/harness/bench_report.hpp"
 #include "silva_process.hpp"
 
 namespace silva::app {

@@ -1,4 +1,4 @@
-#include "app/cli.hpp"
+#include "app/cli/cli.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/config_loader.hpp"
+#include "app/config/config_loader.hpp"
 #include "config_equal.hpp"
 
 namespace silva::app {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/config_loader.hpp"
+#include "app/config/config_loader.hpp"
 #include "config_equal.hpp"
 #include "silva_process.hpp"
 

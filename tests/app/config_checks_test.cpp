@@ -1,4 +1,4 @@
-#include "app/config_checks.hpp"
+#include "app/config/config_checks.hpp"
 
 #include <gtest/gtest.h>
 

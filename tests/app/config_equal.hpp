@@ -3,7 +3,7 @@
 #include <string>
 #include <variant>
 
-#include "app/config_schema.hpp"
+#include "app/config/config_schema.hpp"
 
 namespace silva::app::testing {
 

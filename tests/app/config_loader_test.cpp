@@ -1,4 +1,5 @@
-#include "app/config_loader.hpp"
+#include "app/config/config_checks.hpp"
+#include "app/config/config_loader.hpp"
 
 #include <gtest/gtest.h>
 

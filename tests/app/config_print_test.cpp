@@ -1,4 +1,4 @@
-#include "app/config_print.hpp"
+#include "app/config/config_print.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "app/config_schema.hpp"
+#include "app/config/config_schema.hpp"
 
 #include <gtest/gtest.h>
 

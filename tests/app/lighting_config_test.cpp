@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "app/lighting_config.hpp"
+#include "app/config/lighting_config.hpp"
 #include "core/error.hpp"
 
 namespace silva::app {

@@ -6,7 +6,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "app/asset_files.hpp"
+#include "app/commands/asset_files.hpp"
 #include "core/error.hpp"
 #include "tests/common/mesh_checks.hpp"
 

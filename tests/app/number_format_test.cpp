@@ -1,4 +1,4 @@
-#include "app/number_format.hpp"
+#include "app/config/number_format.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,11 +2,11 @@
 
 #include <cmath>
 
-#include "app/config_loader.hpp"
-#include "app/profile_output.hpp"
-#include "app/profile_world.hpp"
-#include "app/run_setup.hpp"
+#include "app/config/config_loader.hpp"
+#include "app/config/run_setup.hpp"
 #include "app/schedule/world_schedule.hpp"
+#include "bench/harness/profile_output.hpp"
+#include "bench/harness/profile_world.hpp"
 #include "silva_process.hpp"
 #include "world/chunk_regions.hpp"
 

@@ -1,0 +1,88 @@
+#pragma once
+/// @file What each subcommand asks of the pipeline, after the CLI has checked every input.
+/// The run_* functions are the pipeline entry points (app/commands/run_*.cpp); `silva bench` and
+/// `silva profile` call into the harness of bench/harness/.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli/reporter.hpp"
+#include "app/config/config_loader.hpp"
+
+namespace silva::app {
+
+/// `--shard i/N`: this process renders the frames whose global index mod N = i.
+struct Shard {
+  int index = 0;  ///< i, 0 ≤ i < count
+  int count = 1;  ///< N ≥ 1
+};
+
+/// `silva generate`: capture a dataset into <output.dir>/<seed>/.
+struct GenerateRequest {
+  LoadedConfig config;        ///< Checked; output.dir already holds --out. seed_given is false only
+                              ///< for --resume without a seed (take it from the run marker).
+  int threads = 1;            ///< Resolved thread count (for run.json).
+  bool resume = false;        ///< --resume: continue the run in the folder.
+  bool overwrite = false;     ///< --overwrite: empty <seed>/ first.
+  std::optional<Shard> shard; ///< --shard i/N (seed is then explicit).
+};
+
+/// `silva world`: build the world (default or a disc), optionally export glTF, report stats.
+struct WorldRequest {
+  /// `--center x,y --radius R`: build the chunks intersecting this disc.
+  struct Disc {
+    double x = 0, y = 0, radius = 0;  ///< Centre (m) and radius (m, > 0).
+  };
+  LoadedConfig config;              ///< Checked, seed resolved.
+  int threads = 1;                  ///< Resolved thread count.
+  std::optional<Disc> region;       ///< nullopt: the default world (CONTRACT.md).
+  std::filesystem::path export_path;  ///< --export FILE.glb ("" = no export).
+  bool instancing = false;          ///< --instancing: EXT_mesh_gpu_instancing in the export.
+  std::filesystem::path map_path;   ///< --map FILE.png: top-down class map ("" = none).
+  bool stats = false;               ///< --stats: print counts and timings.
+};
+
+/// `silva assets build`: generate the procedural asset library.
+struct AssetsBuildRequest {
+  std::filesystem::path out_dir;  ///< --out DIR ("" = the library folder the pipeline uses by default).
+};
+
+/// `silva merge DIR`: check shards cover every frame, then write manifest.json.
+struct MergeRequest {
+  std::filesystem::path run_dir;  ///< <output.dir>/<seed>/, an existing folder.
+};
+
+/// `silva bench`: the end-to-end benchmark harness.
+struct BenchRequest {
+  bool quick = false;                 ///< --quick: a short subset.
+  std::filesystem::path out_dir;      ///< --out DIR ("" = bench/results of the source tree).
+};
+
+/// `silva profile placement`: a density (x elevation x trail) sweep over seeds, profiled per class.
+struct ProfilePlacementRequest {
+  LoadedConfig config;              ///< Checked base config; its seed is the sweep's first seed.
+  int threads = 1;                  ///< Resolved thread count.
+  std::optional<double> radius;     ///< --radius R around the origin (nullopt = the default world).
+  std::vector<double> densities;    ///< --densities: vegetation.density values (%), each 1..25.
+  int seeds = 3;                    ///< --seeds N: seeds seed, seed+1, ..., seed+N-1.
+  std::vector<double> elevations;   ///< --elevations: terrain.max_elevation values (m), each 0..50.
+  std::vector<bool> trails;         ///< --trail on,off: trail.enabled values.
+  std::filesystem::path out_dir;    ///< --out DIR: placement.json, placement.csv, heatmaps, charts.
+};
+
+/// Runs the generate pipeline; returns the exit code. Throws InputError / IoError.
+int run_generate(const GenerateRequest& request, const Reporter& reporter);
+/// Builds (and exports) a world; returns the exit code. Throws InputError / IoError.
+int run_world(const WorldRequest& request, const Reporter& reporter);
+/// Builds the asset library; returns the exit code. Throws InputError / IoError.
+int run_assets_build(const AssetsBuildRequest& request, const Reporter& reporter);
+/// Merges shards of a run; returns the exit code. Throws InputError / IoError.
+int run_merge(const MergeRequest& request, const Reporter& reporter);
+/// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
+int run_bench(const BenchRequest& request, const Reporter& reporter);
+/// Profiles placement over a sweep; returns the exit code. Throws InputError / IoError.
+int run_profile_placement(const ProfilePlacementRequest& request, const Reporter& reporter);
+
+}  // namespace silva::app

@@ -1,0 +1,125 @@
+// `silva generate` after the CLI checks: plan, prepare the run folder, capture, write manifests.
+#include <chrono>
+#include <filesystem>
+
+#include "app/cli/interrupt.hpp"
+#include "app/cli/progress.hpp"
+#include "app/commands/commands.hpp"
+#include "app/commands/run_manifest.hpp"
+#include "app/config/run_setup.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/ontology_file.hpp"
+#include "io/pose_file.hpp"
+#include "io/run_folder.hpp"
+#include "app/schedule/world_schedule.hpp"
+
+namespace silva::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+/// Chunk cache bound: every chunk within the render distance of a camera, at least 256.
+size_t cache_capacity(const Config& c) {
+  const double r = c.world.render_distance + c.terrain.chunk_size;
+  const double chunks = 3.14159265358979 * r * r / (c.terrain.chunk_size * c.terrain.chunk_size);
+  return std::max<size_t>(256, size_t(chunks));
+}
+
+io::FolderMode folder_mode(const GenerateRequest& r) {
+  if (r.shard) return io::FolderMode::Shard;
+  if (r.resume) return io::FolderMode::Resume;
+  if (r.overwrite) return io::FolderMode::Overwrite;
+  return io::FolderMode::Fresh;
+}
+
+std::string shard_record_name(const Shard& s) {
+  return "run.shard-" + std::to_string(s.index) + "-of-" + std::to_string(s.count) + ".json";
+}
+}  // namespace
+
+int run_generate(const GenerateRequest& request, const Reporter& reporter) {
+  LoadedConfig loaded = request.config;
+  const Config& cfg = loaded.config;
+  if (request.shard && request.overwrite)
+    throw InputError("--overwrite cannot be combined with --shard (shards share one folder); empty it first");
+  const bool seed_from_marker = !loaded.seed_given;
+  if (seed_from_marker) {
+    loaded.config.seed = io::find_resumable_seed(cfg.output.dir);
+    loaded.seed_given = true;
+  }
+
+  const auto t_plan = std::chrono::steady_clock::now();
+  RunSetup setup = make_run_setup(loaded);
+  const io::OutputSelection outputs = io::OutputSelection::from_names(cfg.output.types);
+  std::vector<io::PoseEntry> poses;
+  if (std::find(cfg.captures.sequences.begin(), cfg.captures.sequences.end(), "custom") != cfg.captures.sequences.end())
+    poses = io::read_pose_file(cfg.captures.poses_file);
+  WorldSchedule schedule(setup.world, cache_capacity(cfg));
+  const std::vector<world::PlannedFrame>& plan =
+      schedule.plan(std::move(poses), [&](const std::string& w) { reporter.warn(w); });
+  const double plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_plan).count();
+
+  const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(loaded), folder_mode(request));
+  // Noted once every input is checked, so bad input prints only its error line (a seed drawn
+  // from the clock was noted when it was drawn).
+  if (!loaded.seed_from_clock)
+    reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
+  io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
+
+  std::vector<world::PlannedFrame> frames;
+  int skipped = 0;
+  for (const auto& f : plan) {
+    if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
+    if (fs::exists(run_dir / systems::camera_file(f))) {
+      ++skipped;
+      continue;
+    }
+    frames.push_back(f);
+  }
+  reporter.note("silva: capturing " + std::to_string(frames.size()) + " frames at " +
+                std::to_string(cfg.output.width) + "x" + std::to_string(cfg.output.height) + " into " +
+                run_dir.string() + (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
+
+  Progress progress(reporter, int(frames.size()), "frames");
+  const systems::CaptureStats stats =
+      schedule.capture(frames, {setup.preset, setup.ontology, outputs, run_dir},
+                       [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
+  progress.finish();
+
+  nlohmann::json record = make_run_record(stats, request.threads, skipped, plan_s);
+  const nlohmann::json manifest = make_manifest(loaded, setup, count_frames(plan));
+  if (stats.stopped) {
+    io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
+    throw Interrupted("interrupted after " + std::to_string(stats.frames_written) +
+                      " frames; continue with: silva generate --resume --out " + cfg.output.dir);
+  }
+  if (request.shard) {
+    record["shard"] = {{"index", request.shard->index}, {"count", request.shard->count}};
+    record["manifest"] = manifest;
+    record["frames_total"] = plan.size();
+    io::write_file_atomic(run_dir / shard_record_name(*request.shard), record.dump(2) + "\n");
+  } else {
+    io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
+    io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
+  }
+  const double fps = stats.wall_s > 0 ? stats.frames_written / stats.wall_s : 0.0;
+  nlohmann::json summary = {{"ok", true},
+                            {"seed", cfg.seed},
+                            {"run_dir", run_dir.string()},
+                            {"frames_written", stats.frames_written},
+                            {"frames_skipped_complete", skipped},
+                            {"frames_planned", plan.size()},
+                            {"bytes_written", stats.bytes_written},
+                            {"wall_s", stats.wall_s},
+                            {"frames_per_s", fps},
+                            {"timings_s", record["timings_s"]}};
+  if (request.shard) summary["shard"] = record["shard"];
+  char line[256];
+  std::snprintf(line, sizeof line, "wrote %d frames (%.1f MB) in %.1f s (%.2f frames/s) to %s", stats.frames_written,
+                stats.bytes_written / 1e6, stats.wall_s, fps, run_dir.string().c_str());
+  reporter.result(summary, line);
+  return 0;
+}
+
+}  // namespace silva::app

@@ -1,0 +1,69 @@
+#include "app/commands/run_manifest.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <ctime>
+
+#include "app/cli/version.hpp"
+#include "app/config/config_print.hpp"
+#include "io/sha256.hpp"
+
+namespace silva::app {
+
+std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& frames) {
+  std::map<std::string, int> counts;
+  for (const auto& f : frames) counts[f.sequence]++;
+  return counts;
+}
+
+nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
+                             const std::map<std::string, int>& frames_per_sequence) {
+  nlohmann::json config = config_to_json(loaded);
+  config["output"].erase("dir");
+  nlohmann::json frames = nlohmann::json::object();
+  for (const auto& [sequence, n] : frames_per_sequence) frames[sequence] = n;
+  return {
+      {"silva_version", silva_version()},
+      {"seed", loaded.config.seed},
+      {"config", config},
+      {"sha256",
+       {{"lighting", io::sha256_file(setup.lighting_toml)},
+        {"ontology", io::sha256_file(setup.ontology_json)},
+        {"asset_library", io::sha256_file(setup.library_json)}}},
+      {"frames", frames},
+  };
+}
+
+nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int skipped, double plan_s) {
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return {
+      {"silva_version", silva_version()},
+      {"git_revision", git_revision()},
+      {"threads", threads},
+      {"host", host},
+      {"date", date},
+      {"frames_written", s.frames_written},
+      {"frames_skipped_complete", skipped},
+      {"bytes_written", s.bytes_written},
+      {"chunks_generated", s.chunks_generated},
+      {"triangles_submitted", s.triangles_submitted},
+      {"triangles_rasterised", s.triangles_rasterised},
+      {"timings_s",
+       {{"plan", plan_s},
+        {"stream", s.stream_s},
+        {"prepare", s.prepare_s},
+        {"render", s.render_s},
+        {"shadow", s.shadow_s},
+        {"shade", s.shade_s},
+        {"encode", s.encode_s},
+        {"write", s.write_s},
+        {"wall", s.wall_s}}},
+  };
+}
+
+}  // namespace silva::app

@@ -1,0 +1,24 @@
+#pragma once
+/// @file manifest.json (deterministic) and run.json (varies) of a dataset (CONTRACT.md).
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/config/run_setup.hpp"
+#include "systems/write_dataset.hpp"
+
+namespace silva::app {
+
+/// The manifest: Silva version, resolved config without output.dir, sha256 of the lighting,
+/// ontology and asset-library files, seed, frame counts per sequence.
+nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
+                             const std::map<std::string, int>& frames_per_sequence);
+
+/// Frames per sequence of a plan.
+std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& frames);
+
+/// run.json: timings per phase, counts, thread count, host, date, git revision.
+nlohmann::json make_run_record(const systems::CaptureStats& stats, int threads, int skipped, double plan_s);
+
+}  // namespace silva::app

@@ -1,0 +1,88 @@
+#include "app/config/config_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/config/lighting_config.hpp"
+#include "app/config/number_format.hpp"
+#include "core/error.hpp"
+
+namespace silva::app {
+
+namespace {
+
+constexpr int64_t kMaxFramesPerSequence = 1000000;  // frame files are numbered with six digits
+
+bool contains(const std::vector<std::string>& list, std::string_view item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+void check_multiple(const std::string& where, double chunk_size, std::string_view part_key,
+                    double part) {
+  if (!is_whole_multiple(chunk_size, part)) {
+    throw InputError(where + ": terrain.chunk_size = " + format_number(chunk_size) +
+                     " must be a whole multiple of " + std::string(part_key) + " = " +
+                     format_number(part));
+  }
+}
+
+}  // namespace
+
+bool is_whole_multiple(double whole, double part) {
+  const double ratio = whole / part;
+  const double n = std::round(ratio);
+  return n >= 1 && std::fabs(ratio - n) <= 1e-9 * n;
+}
+
+std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded) {
+  std::vector<std::string> names;
+  for (const auto& [name, preset] : parse_preset_tables(loaded.lighting_presets, loaded.source)) {
+    names.push_back(name);
+  }
+  return names;
+}
+
+void check_config(const LoadedConfig& loaded) {
+  const Config& c = loaded.config;
+  const std::string where = loaded.source.empty() ? std::string("config") : loaded.source;
+  if (c.output.dir.empty()) throw InputError(where + ": output.dir must not be empty");
+  if (!(c.camera.near < c.camera.far)) {
+    throw InputError(where + ": camera.near = " + format_number(c.camera.near) +
+                     " must be less than camera.far = " + format_number(c.camera.far));
+  }
+  check_multiple(where, c.terrain.chunk_size, "terrain.vertex_spacing", c.terrain.vertex_spacing);
+  check_multiple(where, c.terrain.chunk_size, "vegetation.grid_spacing", c.vegetation.grid_spacing);
+  const auto& sequences = c.captures.sequences;
+  if (contains(sequences, "custom") && c.captures.poses_file.empty()) {
+    throw InputError(where + ": captures.sequences has \"custom\", which needs captures.poses_file");
+  }
+  if (sequences.empty()) {
+    throw InputError(where + ": captures.sequences is empty (allowed: one or more of autopilot, "
+                             "random, custom)");
+  }
+  const bool autopilot = contains(sequences, "autopilot") && c.trail.enabled;
+  if (!autopilot && !contains(sequences, "random") && !contains(sequences, "custom")) {
+    throw InputError(where + ": the autopilot sequence needs trail.enabled = true, and no other "
+                             "sequence is left in captures.sequences");
+  }
+  if (autopilot && c.captures.autopilot_yaws.empty()) {
+    throw InputError(where + ": captures.autopilot_yaws must list at least one yaw for the "
+                             "autopilot sequence");
+  }
+  const int64_t autopilot_frames =
+      int64_t{c.captures.autopilot_points} * int64_t(c.captures.autopilot_yaws.size());
+  if (autopilot && autopilot_frames > kMaxFramesPerSequence) {
+    throw InputError(where + ": captures.autopilot_points x len(captures.autopilot_yaws) = " +
+                     std::to_string(autopilot_frames) + " frames, allowed at most 1000000");
+  }
+  const std::vector<std::string> presets = lighting_preset_names(loaded);
+  if (!contains(presets, c.lighting.time_of_day)) {
+    std::string allowed;
+    for (const std::string& name : presets) allowed += (allowed.empty() ? "" : ", ") + name;
+    throw InputError(where + ": lighting.time_of_day = \"" + c.lighting.time_of_day +
+                     "\" is not a preset (allowed: " + allowed +
+                     ", or define [lighting.presets." + c.lighting.time_of_day + "])");
+  }
+}
+
+}  // namespace silva::app

@@ -1,0 +1,203 @@
+#include "app/config/config_schema.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/config/edit_distance.hpp"
+#include "app/config/number_format.hpp"
+
+namespace silva::app {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The bounds shorthand used in the table below.
+NumericRange between(double min, double max) { return {min, max, false}; }
+NumericRange above(double min, double max = kInf) { return {min, max, true}; }
+
+std::vector<ConfigKey> build_schema() {
+  const std::vector<std::string_view> output_types = {
+      "rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr", "normal",
+      "depth_preview"};
+  const std::vector<std::string_view> sequences = {"autopilot", "random", "custom"};
+  using T = ValueType;
+  return {
+      {"seed", T::Int, "world seed; drawn from the clock when absent (printed %010d)",
+       between(0, 9999999999.0), {}, [](Config& c) -> FieldRef { return &c.seed; }},
+      {"output.dir", T::String, "dataset folder; a run writes <dir>/<seed>/", {}, {},
+       [](Config& c) -> FieldRef { return &c.output.dir; }},
+      {"output.resolution", T::Resolution, "image size in pixels, \"WxH\"", between(16, 8192), {},
+       [](Config& c) -> FieldRef { return ResolutionRef{&c.output.width, &c.output.height}; }},
+      {"output.types", T::StringList, "images written per capture", {}, output_types,
+       [](Config& c) -> FieldRef { return &c.output.types; }},
+      {"lighting.time_of_day", T::String,
+       "lighting preset: day, dusk, night or a [lighting.presets.<name>] of this config", {}, {},
+       [](Config& c) -> FieldRef { return &c.lighting.time_of_day; }},
+      {"captures.sequences", T::StringList, "capture sequences, in this order", {}, sequences,
+       [](Config& c) -> FieldRef { return &c.captures.sequences; }},
+      {"captures.random_count", T::Int, "number of random poses", between(0, 1000000), {},
+       [](Config& c) -> FieldRef { return &c.captures.random_count; }},
+      {"captures.autopilot_points", T::Int, "points spaced evenly along the trail",
+       between(1, 1000000), {},
+       [](Config& c) -> FieldRef { return &c.captures.autopilot_points; }},
+      {"captures.autopilot_yaws", T::FloatList, "yaws captured at each autopilot point, degrees",
+       between(-360, 360), {},
+       [](Config& c) -> FieldRef { return &c.captures.autopilot_yaws; }},
+      {"captures.aerial", T::Bool, "aerial perspective for autopilot and random poses", {}, {},
+       [](Config& c) -> FieldRef { return &c.captures.aerial; }},
+      {"captures.poses_file", T::String, "JSON or CSV pose file of the custom sequence (\"\" = none)",
+       {}, {}, [](Config& c) -> FieldRef { return &c.captures.poses_file; }},
+      {"camera.fov_deg", T::Float, "horizontal field of view, degrees", between(10, 170), {},
+       [](Config& c) -> FieldRef { return &c.camera.fov_deg; }},
+      {"camera.near", T::Float, "near clipping distance, metres (below camera.far)", above(0, 1e6),
+       {}, [](Config& c) -> FieldRef { return &c.camera.near; }},
+      {"camera.far", T::Float, "far clipping distance, metres; beyond it is background",
+       above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.camera.far; }},
+      {"camera.ground_height", T::Float, "ground camera height above the terrain, metres",
+       above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.ground_height; }},
+      {"camera.aerial_height", T::Float, "aerial camera height above the terrain, metres",
+       above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_height; }},
+      {"camera.aerial_pitch_deg", T::Float, "aerial camera pitch, degrees (ground pitch is 0)",
+       between(-90, 90), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_pitch_deg; }},
+      {"camera.film_grain", T::Float, "grain std-dev in linear [0,1] units, 0 = off",
+       between(0, 1), {}, [](Config& c) -> FieldRef { return &c.camera.film_grain; }},
+      {"camera.antialias", T::Bool, "edge antialiasing of RGB; labels and depth stay exact per pixel", {}, {},
+       [](Config& c) -> FieldRef { return &c.camera.antialias; }},
+      {"vegetation.density", T::Float, "percent of placement points that hold a tree",
+       between(1, 25), {}, [](Config& c) -> FieldRef { return &c.vegetation.density; }},
+      {"vegetation.grid_spacing", T::Float, "metres between placement points", between(0.1, 1000),
+       {}, [](Config& c) -> FieldRef { return &c.vegetation.grid_spacing; }},
+      {"vegetation.ground", T::Bool, "grass and ferns; false = bare ground", {}, {},
+       [](Config& c) -> FieldRef { return &c.vegetation.ground; }},
+      {"terrain.max_elevation", T::Float, "terrain height amplitude, metres", between(0, 50), {},
+       [](Config& c) -> FieldRef { return &c.terrain.max_elevation; }},
+      {"terrain.octaves", T::Int, "simplex noise octaves", between(1, 16), {},
+       [](Config& c) -> FieldRef { return &c.terrain.octaves; }},
+      {"terrain.lacunarity", T::Float, "frequency factor between octaves", between(1, 8), {},
+       [](Config& c) -> FieldRef { return &c.terrain.lacunarity; }},
+      {"terrain.persistence", T::Float, "amplitude factor between octaves", between(0, 1), {},
+       [](Config& c) -> FieldRef { return &c.terrain.persistence; }},
+      {"terrain.frequency", T::Float, "base noise frequency, cycles per metre", above(0, 10), {},
+       [](Config& c) -> FieldRef { return &c.terrain.frequency; }},
+      {"terrain.chunk_size", T::Float,
+       "chunk side, metres; a whole multiple of vertex_spacing and vegetation.grid_spacing",
+       between(1, 1024), {}, [](Config& c) -> FieldRef { return &c.terrain.chunk_size; }},
+      {"terrain.vertex_spacing", T::Float, "heightfield vertex spacing, metres", between(0.01, 1024),
+       {}, [](Config& c) -> FieldRef { return &c.terrain.vertex_spacing; }},
+      {"trail.enabled", T::Bool, "a walkable trail (needed by the autopilot sequence)", {}, {},
+       [](Config& c) -> FieldRef { return &c.trail.enabled; }},
+      {"trail.width", T::Float, "trail width, metres", between(0.1, 20), {},
+       [](Config& c) -> FieldRef { return &c.trail.width; }},
+      {"trail.control_points", T::Int, "control points of the trail's seeded walk",
+       between(2, 100000), {}, [](Config& c) -> FieldRef { return &c.trail.control_points; }},
+      {"trail.control_spacing", T::Float, "metres between trail control points", between(1, 1000),
+       {}, [](Config& c) -> FieldRef { return &c.trail.control_spacing; }},
+      {"world.extent", T::Float,
+       "side of the square capture region centred on the origin, metres (the trail keeps 32 m "
+       "from its edge)",
+       above(64, 1e6), {}, [](Config& c) -> FieldRef { return &c.world.extent; }},
+      {"world.render_distance", T::Float, "radius of the chunk cache around each camera, metres",
+       above(0, 1e5), {}, [](Config& c) -> FieldRef { return &c.world.render_distance; }},
+      {"render.lod", T::Bool, "level of detail by screen size; false = full detail everywhere", {},
+       {}, [](Config& c) -> FieldRef { return &c.render.lod; }},
+  };
+}
+
+}  // namespace
+
+std::string_view type_description(ValueType type) {
+  switch (type) {
+    case ValueType::Int: return "an integer";
+    case ValueType::Float: return "a number";
+    case ValueType::Bool: return "a boolean (true or false)";
+    case ValueType::String: return "a string";
+    case ValueType::Resolution: return "a string \"WxH\"";
+    case ValueType::StringList: return "an array of strings";
+    case ValueType::FloatList: return "an array of numbers";
+  }
+  return "a value";
+}
+
+bool NumericRange::contains(double v) const {
+  if (!std::isfinite(v)) return false;
+  const bool above_min = min_exclusive ? v > min : v >= min;
+  return above_min && v <= max;
+}
+
+std::string NumericRange::describe() const {
+  const bool has_min = std::isfinite(min);
+  const bool has_max = std::isfinite(max);
+  if (has_min && has_max) {
+    if (min_exclusive) return "greater than " + format_number(min) + ", at most " + format_number(max);
+    return format_number(min) + " to " + format_number(max);
+  }
+  if (has_min) return (min_exclusive ? "greater than " : "at least ") + format_number(min);
+  if (has_max) return "at most " + format_number(max);
+  return "any finite number";
+}
+
+std::string_view ConfigKey::section() const {
+  const size_t dot = name.find('.');
+  return dot == std::string_view::npos ? std::string_view{} : name.substr(0, dot);
+}
+
+std::string_view ConfigKey::leaf() const {
+  const size_t dot = name.find('.');
+  return dot == std::string_view::npos ? name : name.substr(dot + 1);
+}
+
+std::string ConfigKey::allowed() const {
+  switch (type) {
+    case ValueType::Int:
+    case ValueType::Float: return range.describe();
+    case ValueType::FloatList: return "each " + range.describe();
+    case ValueType::Resolution: return "\"WxH\", each " + range.describe();
+    case ValueType::Bool: return "true or false";
+    case ValueType::String:
+    case ValueType::StringList: {
+      if (choices.empty()) return "any string";
+      std::string text = type == ValueType::StringList ? "a subset of " : "one of ";
+      for (size_t i = 0; i < choices.size(); ++i) {
+        text += (i == 0 ? "" : ", ");
+        text += choices[i];
+      }
+      return text;
+    }
+  }
+  return {};
+}
+
+const std::vector<ConfigKey>& config_schema() {
+  static const std::vector<ConfigKey> schema = build_schema();
+  return schema;
+}
+
+const ConfigKey* find_key(std::string_view name) {
+  for (const ConfigKey& key : config_schema()) {
+    if (key.name == name) return &key;
+  }
+  return nullptr;
+}
+
+std::string_view closest_key(std::string_view name) {
+  std::string_view best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const ConfigKey& key : config_schema()) {
+    // A truncated name ("camera.fov") is one step from the key it starts ("camera.fov_deg").
+    const bool truncated = !name.empty() && key.name.substr(0, name.size()) == name;
+    const size_t d = truncated ? 1 : edit_distance(name, key.name);
+    if (d < best_distance) {
+      best_distance = d;
+      best = key.name;
+    }
+  }
+  return best;
+}
+
+bool is_section(std::string_view name) {
+  return std::any_of(config_schema().begin(), config_schema().end(),
+                     [&](const ConfigKey& key) { return !name.empty() && key.section() == name; });
+}
+
+}  // namespace silva::app

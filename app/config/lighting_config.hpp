@@ -1,0 +1,28 @@
+#pragma once
+/// @file TOML -> render::LightingPreset: the [lighting.presets.<name>] tables of configs/lighting.toml
+/// or of a user config.
+#include <map>
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "render/lighting.hpp"
+
+namespace silva::app {
+
+/// The built-in presets overlaid with every `lighting.presets.<name>` table of `root`. Each field
+/// is optional: a table starts from the built-in of the same name, or from `day` for a new name.
+/// Throws InputError naming `file` and the key for an unknown field (listing the allowed keys), a
+/// wrong type (naming the expected type), a value out of range, or a preset that is not a table.
+std::map<std::string, render::LightingPreset> parse_lighting_presets(const toml::table& root,
+                                                                     const std::string& file);
+
+/// Same, given the `lighting.presets` table itself (as app/config/config_loader.hpp keeps it).
+std::map<std::string, render::LightingPreset> parse_preset_tables(const toml::table& presets,
+                                                                  const std::string& file);
+
+/// Reads a lighting file (configs/lighting.toml) and parses its presets. Throws IoError if the
+/// file cannot be read, InputError if it is not valid TOML or a preset is invalid.
+std::map<std::string, render::LightingPreset> load_lighting_presets(const std::string& path);
+
+}  // namespace silva::app

@@ -1,0 +1,38 @@
+#pragma once
+/// @file What every world-building command loads before it starts: ontology, lighting preset,
+/// asset library and the world context (terrain field, trail).
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "app/config/config_loader.hpp"
+#include "assets/library.hpp"
+#include "core/ontology.hpp"
+#include "render/lighting.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::app {
+
+/// The loaded inputs of a run. Movable; `world.library` points into `library`.
+struct RunSetup {
+  std::unique_ptr<assets::AssetLibrary> library;  ///< Placeable assets.
+  world::WorldContext world;                      ///< Config, terrain, trail, asset tables.
+  Ontology ontology;                              ///< Class ids, names, colours.
+  render::LightingPreset preset;                  ///< The preset lighting.time_of_day names.
+  std::filesystem::path library_json;             ///< The asset library manifest used.
+  std::filesystem::path lighting_toml;            ///< The lighting presets file used.
+  std::filesystem::path ontology_json;            ///< The ontology file used.
+};
+
+/// The asset library manifest: $SILVA_ASSETS/library.json when set, else the one built with
+/// the binary (SILVA_ASSET_DIR). Throws InputError naming the path when it is missing.
+std::filesystem::path asset_library_path();
+
+/// Loads ontology, presets (built-in, configs/lighting.toml, the config's own) and assets and
+/// builds the world context for `loaded`. Throws InputError naming the file at fault.
+RunSetup make_run_setup(const LoadedConfig& loaded);
+
+/// Hash of the resolved config without output.dir (marks a run folder's config), 16 hex digits.
+std::string config_hash(const LoadedConfig& loaded);
+
+}  // namespace silva::app
