@@ -1,24 +1,15 @@
 #include "world/world_generator.hpp"
 
-#include <chrono>
 #include <map>
 #include <string>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/instance_id.hpp"
+#include "core/stopwatch.hpp"
 #include "world/terrain_lod.hpp"
 
 namespace silva::world {
-
-namespace {
-
-/// Seconds elapsed since t0.
-double since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
   uint32_t index = 0;
@@ -32,23 +23,23 @@ void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
 }
 
 ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   ChunkTerrain out;
   out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
   out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
-  out.generate_s = since(t0);
+  out.generate_s = clock.seconds();
   return out;
 }
 
 ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
                              const CandidateLookup& neighbours) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   ChunkObjects out;
   ResolveStats rs;
   out.objects = resolve_chunk(ctx, coord, own, neighbours, rs);
   assign_instance_ids(coord, out.objects);
   auto& st = out.stats;
-  st.resolve_s = since(t0);
+  st.resolve_s = clock.seconds();
   for (const Vegetation& v : out.objects) ++st.objects_by_role[size_t(v.role)];
   st.candidates = uint32_t(own.solids.size() + own.ground.size());
   st.trail_rejected = own.trail_rejected;
@@ -73,10 +64,10 @@ ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjec
 }
 
 void add_terrain_level(ChunkContent& chunk) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   chunk.terrain_lod = build_terrain_lod(chunk.terrain);
   chunk.terrain_bounds = chunk.terrain.bounds();
-  chunk.stats.generate_s += since(t0);
+  chunk.stats.generate_s += clock.seconds();
 }
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
@@ -85,7 +76,7 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const Chu
 }
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   const ChunkCandidates own = place_candidates(ctx, coord, true);
   std::map<ChunkCoord, ChunkCandidates> around;
   const int ring = ctx.neighbour_ring;
@@ -95,7 +86,7 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {
         const ChunkCoord n{coord.i + di, coord.j + dj};
         around.emplace(n, place_candidates(ctx, n, false));
       }
-  const double place_s = since(t0);
+  const double place_s = clock.seconds();
   ChunkContent out = generate_chunk(ctx, coord, own, [&](ChunkCoord c) -> const ChunkCandidates& { return around.at(c); });
   out.stats.place_s = place_s;
   return out;

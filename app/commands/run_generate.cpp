@@ -1,5 +1,4 @@
 // `silva generate` after the CLI checks: plan, prepare the run folder, capture, write manifests.
-#include <chrono>
 #include <filesystem>
 
 #include "app/cli/interrupt.hpp"
@@ -8,6 +7,7 @@
 #include "app/commands/run_manifest.hpp"
 #include "app/config/run_setup.hpp"
 #include "core/error.hpp"
+#include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
@@ -36,6 +36,44 @@ io::FolderMode folder_mode(const GenerateRequest& r) {
 std::string shard_record_name(const Shard& s) {
   return "run.shard-" + std::to_string(s.index) + "-of-" + std::to_string(s.count) + ".json";
 }
+
+/// The planned frames this run captures: its shard's, less those already complete in `run_dir`
+/// (counted in `skipped`).
+std::vector<world::PlannedFrame> frames_to_capture(const std::vector<world::PlannedFrame>& plan,
+                                                  const GenerateRequest& request, const fs::path& run_dir,
+                                                  int& skipped) {
+  std::vector<world::PlannedFrame> frames;
+  for (const auto& f : plan) {
+    if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
+    if (fs::exists(run_dir / systems::camera_file(f))) {
+      ++skipped;
+      continue;
+    }
+    frames.push_back(f);
+  }
+  return frames;
+}
+
+/// Prints the run's summary: a JSON object with --json, else one line.
+void report_summary(const Reporter& reporter, const systems::CaptureStats& stats, const nlohmann::json& record,
+                    int64_t seed, const fs::path& run_dir, int skipped, size_t planned) {
+  const double fps = stats.wall_s > 0 ? stats.frames_written / stats.wall_s : 0.0;
+  nlohmann::json summary = {{"ok", true},
+                            {"seed", seed},
+                            {"run_dir", run_dir.string()},
+                            {"frames_written", stats.frames_written},
+                            {"frames_skipped_complete", skipped},
+                            {"frames_planned", planned},
+                            {"bytes_written", stats.bytes_written},
+                            {"wall_s", stats.wall_s},
+                            {"frames_per_s", fps},
+                            {"timings_s", record["timings_s"]}};
+  if (record.contains("shard")) summary["shard"] = record["shard"];
+  char line[256];
+  std::snprintf(line, sizeof line, "wrote %d frames (%.1f MB) in %.1f s (%.2f frames/s) to %s", stats.frames_written,
+                stats.bytes_written / 1e6, stats.wall_s, fps, run_dir.string().c_str());
+  reporter.result(summary, line);
+}
 }  // namespace
 
 int run_generate(const GenerateRequest& request, const Reporter& reporter) {
@@ -49,16 +87,16 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     loaded.seed_given = true;
   }
 
-  const auto t_plan = std::chrono::steady_clock::now();
+  const Stopwatch plan_clock;
   RunSetup setup = make_run_setup(loaded);
   const io::OutputSelection outputs = io::OutputSelection::from_names(cfg.output.types);
-  std::vector<io::PoseEntry> poses;
+  std::vector<PoseEntry> poses;
   if (std::find(cfg.captures.sequences.begin(), cfg.captures.sequences.end(), "custom") != cfg.captures.sequences.end())
     poses = io::read_pose_file(cfg.captures.poses_file);
   WorldSchedule schedule(setup.world, cache_capacity(cfg));
   const std::vector<world::PlannedFrame>& plan =
       schedule.plan(std::move(poses), [&](const std::string& w) { reporter.warn(w); });
-  const double plan_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_plan).count();
+  const double plan_s = plan_clock.seconds();
 
   const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(loaded), folder_mode(request));
   // Noted once every input is checked, so bad input prints only its error line (a seed drawn
@@ -67,16 +105,8 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
 
-  std::vector<world::PlannedFrame> frames;
   int skipped = 0;
-  for (const auto& f : plan) {
-    if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
-    if (fs::exists(run_dir / systems::camera_file(f))) {
-      ++skipped;
-      continue;
-    }
-    frames.push_back(f);
-  }
+  const std::vector<world::PlannedFrame> frames = frames_to_capture(plan, request, run_dir, skipped);
   reporter.note("silva: capturing " + std::to_string(frames.size()) + " frames at " +
                 std::to_string(cfg.output.width) + "x" + std::to_string(cfg.output.height) + " into " +
                 run_dir.string() + (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
@@ -103,22 +133,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
   }
-  const double fps = stats.wall_s > 0 ? stats.frames_written / stats.wall_s : 0.0;
-  nlohmann::json summary = {{"ok", true},
-                            {"seed", cfg.seed},
-                            {"run_dir", run_dir.string()},
-                            {"frames_written", stats.frames_written},
-                            {"frames_skipped_complete", skipped},
-                            {"frames_planned", plan.size()},
-                            {"bytes_written", stats.bytes_written},
-                            {"wall_s", stats.wall_s},
-                            {"frames_per_s", fps},
-                            {"timings_s", record["timings_s"]}};
-  if (request.shard) summary["shard"] = record["shard"];
-  char line[256];
-  std::snprintf(line, sizeof line, "wrote %d frames (%.1f MB) in %.1f s (%.2f frames/s) to %s", stats.frames_written,
-                stats.bytes_written / 1e6, stats.wall_s, fps, run_dir.string().c_str());
-  reporter.result(summary, line);
+  report_summary(reporter, stats, record, cfg.seed, run_dir, skipped, plan.size());
   return 0;
 }
 

@@ -1,9 +1,9 @@
 // `silva world` and `silva assets build` after the CLI checks.
-#include <chrono>
 
 #include "app/commands/asset_files.hpp"
 #include "app/commands/commands.hpp"
 #include "app/config/run_setup.hpp"
+#include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/png_writer.hpp"
@@ -56,10 +56,10 @@ int run_world(const WorldRequest& request, const Reporter& reporter) {
   summary["seed"] = cfg.seed;
   summary["threads"] = request.threads;
   if (!request.export_path.empty()) {
-    const auto t = std::chrono::steady_clock::now();
+    const Stopwatch clock;
     io::write_glb(world_document(w, *setup.library, setup.ontology, request.instancing), request.export_path);
     summary["export"] = {{"file", request.export_path.string()},
-                         {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count()}};
+                         {"seconds", clock.seconds()}};
   }
   if (!request.map_path.empty()) {
     const world::ClassMap map =

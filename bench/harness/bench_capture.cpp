@@ -33,7 +33,7 @@ CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::Pla
   CaptureRun run;
   run.width = frames.empty() ? 0 : frames.front().camera.width;  // frames may be planned at another size
   run.height = frames.empty() ? 0 : frames.front().camera.height;
-  const auto t0 = std::chrono::steady_clock::now();
+  const SteadyClock::time_point t0 = SteadyClock::now();
   tbb::task_arena arena(threads);
   arena.execute([&] {
     run.stats = w.schedule->capture(

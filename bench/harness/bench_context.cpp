@@ -30,7 +30,7 @@ Config bench_variant(const BenchContext& ctx, const std::vector<std::string>& se
 }
 
 std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const SteadyClock::time_point t0 = SteadyClock::now();
   const std::vector<ChunkCoord> coords = world::default_world_chunks(cfg);
   auto w = std::unique_ptr<WarmWorld>(new WarmWorld{world::make_world_context(cfg, *ctx.setup.library), nullptr});
   w->schedule = std::make_unique<WorldSchedule>(w->world, coords.size() + 16);

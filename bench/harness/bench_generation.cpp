@@ -41,7 +41,7 @@ struct TimedBuild {
 };
 
 TimedBuild timed_build(const BenchContext& ctx, const Config& cfg, int threads) {
-  const auto t0 = std::chrono::steady_clock::now();
+  const SteadyClock::time_point t0 = SteadyClock::now();
   const world::WorldContext wc = world::make_world_context(cfg, *ctx.setup.library);
   const double context_s = seconds_since(t0);
   const world::BuiltWorld w = build_default_world(wc, threads);

@@ -4,9 +4,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "app/schedule/world_schedule.hpp"
+#include "core/stopwatch.hpp"
 #include "world/placement.hpp"
 
 namespace silva::app {
@@ -26,9 +26,9 @@ std::vector<ChunkPlacement> count_candidates(const world::WorldContext& ctx, con
   std::vector<ChunkPlacement> out(coords.size());
   tbb::task_arena(threads).execute([&] {
     tbb::parallel_for(size_t(0), coords.size(), [&](size_t k) {
-      const auto t0 = std::chrono::steady_clock::now();
+      const Stopwatch clock;
       const world::ChunkCandidates c = world::place_candidates(ctx, coords[k], true);
-      out[k].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      out[k].seconds = clock.seconds();
       for (const auto* list : {&c.solids, &c.ground})
         for (const world::Candidate& cand : *list) ++out[k].by_role[size_t(ctx.library->assets[cand.asset].role)];
     });
