@@ -11,12 +11,10 @@ void install_generate_terrain(ecs::World& world) {
   world.system("generate_terrain")
       .phase(Phase::Generate)
       .reads_resource<WorldSource>()
-      .reads<Chunk>()
-      .writes<ChunkTerrain>()
+      .writes<ChunkContent>()
       .run([](ecs::SystemContext& sys) {
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
-        sys.parallel_each<const Chunk, ChunkTerrain>(
-            [&](const Chunk& c, ChunkTerrain& t) { t = world::generate_terrain(ctx, c.coord); }, 1);
+        sys.parallel_each<ChunkContent>([&](ChunkContent& chunk) { world::add_terrain(ctx, chunk); }, 1);
       });
 }
 

@@ -4,8 +4,8 @@
 
 namespace silva::systems {
 
-/// Registers "generate_terrain" (phase Generate): world::generate_terrain for every full chunk
-/// entity, in parallel over the entities.
+/// Registers "generate_terrain" (phase Generate): world::add_terrain on the ChunkContent of every
+/// full chunk entity, in parallel over the entities.
 void install_generate_terrain(ecs::World& world);
 
 }  // namespace silva::systems

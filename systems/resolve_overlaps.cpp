@@ -14,7 +14,7 @@ void install_resolve_overlaps(ecs::World& world) {
       .phase(Phase::Resolve)
       .reads_resource<WorldSource>()
       .reads<Chunk, ChunkPlacement>()
-      .writes<ChunkObjects>()
+      .writes<ChunkContent>()
       .run([](ecs::SystemContext& sys) {
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
         std::map<ChunkCoord, const world::ChunkCandidates*> table;
@@ -23,10 +23,10 @@ void install_resolve_overlaps(ecs::World& world) {
         const world::CandidateLookup lookup = [&](ChunkCoord c) -> const world::ChunkCandidates& {
           return *table.at(c);
         };
-        sys.parallel_each<const Chunk, const ChunkPlacement, ChunkObjects>(
-            [&](const Chunk& c, const ChunkPlacement& p, ChunkObjects& o) {
-              o = world::resolve_objects(ctx, c.coord, p.candidates, lookup);
-              o.stats.place_s = p.place_s;
+        sys.parallel_each<const ChunkPlacement, ChunkContent>(
+            [&](const ChunkPlacement& p, ChunkContent& chunk) {
+              world::add_objects(ctx, p.candidates, lookup, chunk);
+              chunk.stats.place_s = p.place_s;
             },
             1);
       });

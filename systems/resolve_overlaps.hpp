@@ -4,7 +4,7 @@
 
 namespace silva::systems {
 
-/// Registers "resolve_overlaps" (phase Resolve): world::resolve_objects for every full chunk entity
+/// Registers "resolve_overlaps" (phase Resolve): world::add_objects on the ChunkContent of every full chunk entity
 /// against the candidates of its neighbour entities (full or halo), in parallel over the chunks.
 void install_resolve_overlaps(ecs::World& world);
 

@@ -20,9 +20,7 @@ namespace {
 /// Moves the finished chunks into the cache and despawns the chunk entities.
 void store(ecs::SystemContext& sys) {
   std::vector<std::shared_ptr<ChunkContent>> done;
-  sys.each<const Chunk, ChunkTerrain, ChunkObjects>([&](const Chunk& c, ChunkTerrain& t, ChunkObjects& o) {
-    done.push_back(std::make_shared<ChunkContent>(world::assemble_chunk(c.coord, std::move(t), std::move(o))));
-  });
+  sys.each<ChunkContent>([&](ChunkContent& chunk) { done.push_back(std::make_shared<ChunkContent>(std::move(chunk))); });
   ecs::CommandBuffer& cb = sys.commands();
   sys.each<const Chunk>([&](ecs::Entity e, const Chunk&) { cb.despawn(e); });
   if (done.empty()) return;
@@ -41,7 +39,7 @@ void install_store_chunks(ecs::World& world) {
       .after("resolve_overlaps")
       .reads_resource<CaptureQueue, PinnedChunks>()
       .writes_resource<world::ChunkCache>()
-      .writes<Chunk, ChunkTerrain, ChunkObjects>()
+      .writes<Chunk, ChunkContent>()
       .run(store);
 }
 

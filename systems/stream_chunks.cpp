@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "components/chunk.hpp"
@@ -34,7 +35,11 @@ void stream(ecs::SystemContext& sys) {
   const std::vector<ChunkCoord> full = sys.resource<const world::ChunkCache>().missing(needed);
   if (full.empty()) return;
   ecs::CommandBuffer& cb = sys.commands();
-  for (ChunkCoord c : full) cb.spawn(Chunk{c, false}, ChunkTerrain{}, ChunkPlacement{}, ChunkObjects{});
+  for (ChunkCoord c : full) {
+    ChunkContent content;
+    content.coord = c;
+    cb.spawn(Chunk{c, false}, ChunkPlacement{}, std::move(content));
+  }
   for (ChunkCoord c : halo_of(full, ctx.neighbour_ring)) cb.spawn(Chunk{c, true}, ChunkPlacement{});
 }
 

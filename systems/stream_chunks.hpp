@@ -5,8 +5,8 @@
 namespace silva::systems {
 
 /// Registers "stream_chunks" (phase Stream, after "aim_camera"): for every chunk of ViewChunks and
-/// PinnedChunks missing from the ChunkCache resource, spawns a full chunk entity (Chunk plus empty
-/// ChunkTerrain, ChunkPlacement and ChunkObjects), and a halo chunk entity for each chunk within
+/// PinnedChunks missing from the ChunkCache resource, spawns a full chunk entity (Chunk, an empty
+/// ChunkPlacement and a ChunkContent holding only its coordinates), and a halo chunk entity for each chunk within
 /// the neighbour ring of one that is not itself full (its candidates resolve the full ones).
 void install_stream_chunks(ecs::World& world);
 

@@ -1,6 +1,7 @@
 #pragma once
-/// @file A chunk's generated content and the outputs of its generation steps (terrain meshes,
-/// placement candidates, final objects): plain data, a pure function of (seed, config, coordinates).
+/// @file A chunk's generated content, the one chunk description (filled step by step: terrain,
+/// then objects; the coarse terrain level once it is drawn), and its placement candidates:
+/// plain data, a pure function of (seed, config, coordinates).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -55,23 +56,10 @@ struct ChunkContent {
   ChunkStats stats;                 ///< Counters and timings.
 };
 
-/// Generate phase output: the chunk's terrain and trail meshes.
-struct ChunkTerrain {
-  Mesh terrain;          ///< Terrain mesh in world coordinates (role Ground).
-  Mesh trail;            ///< Trail piece in world coordinates (empty if none crosses).
-  double generate_s = 0; ///< Time spent building both meshes.
-};
-
-/// Place phase output: the chunk's pre-resolve candidates.
+/// The Place step's output: a chunk's pre-resolve candidates.
 struct ChunkPlacement {
   world::ChunkCandidates candidates;  ///< Solids, and ground vegetation for full chunks.
   double place_s = 0;                 ///< Time spent placing.
-};
-
-/// Resolve phase output: the chunk's final objects.
-struct ChunkObjects {
-  std::vector<Vegetation> objects;  ///< Final objects in (grid point, sub) order, ids assigned.
-  ChunkStats stats;                 ///< Counters and timings (place, generate, resolve).
 };
 
 }  // namespace silva

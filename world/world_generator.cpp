@@ -22,25 +22,23 @@ void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
   }
 }
 
-ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord) {
+void add_terrain(const WorldContext& ctx, ChunkContent& chunk) {
   const Stopwatch clock;
-  ChunkTerrain out;
-  out.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), coord);
-  out.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), coord);
-  out.generate_s = clock.seconds();
-  return out;
+  chunk.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), chunk.coord);
+  chunk.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), chunk.coord);
+  chunk.stats.triangles = chunk.terrain.triangle_count() + chunk.trail.triangle_count();
+  chunk.stats.generate_s = clock.seconds();
 }
 
-ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
-                             const CandidateLookup& neighbours) {
+void add_objects(const WorldContext& ctx, const ChunkCandidates& own, const CandidateLookup& neighbours,
+                 ChunkContent& chunk) {
   const Stopwatch clock;
-  ChunkObjects out;
   ResolveStats rs;
-  out.objects = resolve_chunk(ctx, coord, own, neighbours, rs);
-  assign_instance_ids(coord, out.objects);
-  auto& st = out.stats;
-  st.resolve_s = clock.seconds();
-  for (const Vegetation& v : out.objects) ++st.objects_by_role[size_t(v.role)];
+  chunk.objects = resolve_chunk(ctx, chunk.coord, own, neighbours, rs);
+  assign_instance_ids(chunk.coord, chunk.objects);
+  ChunkStats& st = chunk.stats;
+  st.objects_by_role = {};
+  for (const Vegetation& v : chunk.objects) ++st.objects_by_role[size_t(v.role)];
   st.candidates = uint32_t(own.solids.size() + own.ground.size());
   st.trail_rejected = own.trail_rejected;
   st.adjusted = rs.adjusted;
@@ -48,19 +46,7 @@ ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const Ch
   st.ground_dropped = rs.ground_dropped;
   st.broad_queries = rs.broad_queries;
   st.narrow_queries = rs.narrow_queries;
-  return out;
-}
-
-ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects) {
-  ChunkContent out;
-  out.coord = coord;
-  out.terrain = std::move(terrain.terrain);
-  out.trail = std::move(terrain.trail);
-  out.objects = std::move(objects.objects);
-  out.stats = objects.stats;
-  out.stats.generate_s = terrain.generate_s;
-  out.stats.triangles = out.terrain.triangle_count() + out.trail.triangle_count();
-  return out;
+  st.resolve_s = clock.seconds();
 }
 
 void add_terrain_level(ChunkContent& chunk) {
@@ -72,7 +58,11 @@ void add_terrain_level(ChunkContent& chunk) {
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
                             const CandidateLookup& neighbours) {
-  return assemble_chunk(coord, generate_terrain(ctx, coord), resolve_objects(ctx, coord, own, neighbours));
+  ChunkContent chunk;
+  chunk.coord = coord;
+  add_terrain(ctx, chunk);
+  add_objects(ctx, own, neighbours, chunk);
+  return chunk;
 }
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {

@@ -15,17 +15,13 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
                             const CandidateLookup& neighbours);
 
-/// Terrain and trail meshes of chunk `coord` (the Generate phase's work).
-ChunkTerrain generate_terrain(const WorldContext& ctx, ChunkCoord coord);
+/// Sets `chunk`'s terrain and trail meshes (the Generate phase's work) and their stats.
+void add_terrain(const WorldContext& ctx, ChunkContent& chunk);
 
-/// Final objects of chunk `coord` with ids assigned and resolve counters (the Resolve phase's
-/// work); `own` must be place_candidates(ctx, coord, true).
-ChunkObjects resolve_objects(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
-                             const CandidateLookup& neighbours);
-
-/// The content of a chunk from its phase outputs (meshes and objects are moved out); adds the
-/// triangle count and mesh time to the stats.
-ChunkContent assemble_chunk(ChunkCoord coord, ChunkTerrain&& terrain, ChunkObjects&& objects);
+/// Sets `chunk`'s final objects, ids assigned, and their counters (the Resolve phase's work);
+/// `own` must be place_candidates(ctx, chunk.coord, true).
+void add_objects(const WorldContext& ctx, const ChunkCandidates& own, const CandidateLookup& neighbours,
+                 ChunkContent& chunk);
 
 /// Adds the coarse terrain level and the terrain bounds the renderer needs (made once per chunk
 /// that is drawn, not in every world generation; timed into stats.generate_s).
