@@ -30,7 +30,7 @@ run: cli
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-## make bench: the end-to-end benchmark harness, ~20 min on 2 cores (writes bench/results/<date>-<cpu>.json,
+## make bench: the end-to-end benchmark harness, ~20 min on 2 cores (writes bench/results/<date>-<cpu>-bench.json,
 ## a markdown report and charts; see bench/README.md). BENCH_ARGS=--quick for the ~3-minute subset.
 bench:
 	@bash scripts/install-deps.sh --bench

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Charts for Silva's benchmark and profiling results (python3-matplotlib + numpy).
 
-    python3 scripts/bench_charts.py bench/results/<date>-<cpu>.json    # `silva bench` results
+    python3 scripts/bench_charts.py bench/results/<date>-<cpu>-bench.json    # `silva bench` results
     python3 scripts/bench_charts.py profile-placement/placement.json   # `silva profile placement`
 
 PNGs are written next to the JSON: for bench results <stem>-<chart>.png (generation-density,

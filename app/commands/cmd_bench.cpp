@@ -13,7 +13,7 @@ Handler add_bench_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "bench",
       "Run the end-to-end benchmarks that reproduce the thesis tables on this machine and write "
-      "bench/results/<date>-<cpu>.json and a markdown report with charts; thesis Tables 5.1-5.9, the "
+      "bench/results/<date>-<cpu>-bench.json and a markdown report with charts; thesis Tables 5.1-5.9, the "
       "690-set autopilot and thread scaling 1..nproc, compared with the previous results.");
   cmd->add_flag("--quick", request->quick, "a short subset (about 3 minutes on 2 cores instead of about 20)");
   cmd->add_option("--out", request->out_dir, "results folder (default: bench/results of the source tree)")

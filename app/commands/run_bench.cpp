@@ -73,7 +73,7 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   reporter.note(results["peers"].value("ran", false) ? "peers_bench ran" : results["peers"]["note"].get<std::string>());
 
   const std::string stem = results["created_utc"].get<std::string>().substr(0, 10) + "-" +
-                           results["cpu_slug"].get<std::string>() + (plan.kind == "full" ? "" : "-" + plan.kind) +
+                           results["cpu_slug"].get<std::string>() + "-bench" + (plan.kind == "full" ? "" : "-" + plan.kind) +
                            (interrupted ? "-partial" : "");
   if (interrupted) results["kind"] = plan.kind + "-partial";  // never the baseline of a complete run
   const auto previous = previous_results(dir, results["kind"], results["cpu_slug"]);
