@@ -17,7 +17,12 @@ struct OrderedStage::Job {
   bool finished = false;  // in-order part done (or skipped)
 };
 
-OrderedStage::OrderedStage(std::size_t limit) : limit_(std::max<std::size_t>(1, limit)) {}
+OrderedStage::OrderedStage(std::size_t limit) : limit_(limit) {}
+
+void OrderedStage::set_limit(std::size_t limit) {
+  while (in_flight() > 0) wait_oldest();
+  limit_ = limit;
+}
 
 OrderedStage::~OrderedStage() {
   try {
@@ -37,7 +42,7 @@ bool OrderedStage::failed() const {
 }
 
 void OrderedStage::submit(std::function<void()> parallel, std::function<void()> in_order) {
-  while (in_flight() >= limit_) wait_oldest();
+  while (in_flight() >= std::max<std::size_t>(1, limit_)) wait_oldest();
   auto job = std::make_shared<Job>();
   job->parallel = std::move(parallel);
   job->in_order = std::move(in_order);
@@ -55,6 +60,7 @@ void OrderedStage::submit(std::function<void()> parallel, std::function<void()> 
     }
     parallel_done(j);
   });
+  if (limit_ == 0) wait_oldest();
 }
 
 void OrderedStage::fail(std::uint64_t seq, std::exception_ptr error) {
@@ -88,6 +94,9 @@ void OrderedStage::drain() {
     } catch (...) {
       fail(job.seq, std::current_exception());
     }
+    // Drop the closures now, so what they hold (a frame's buffers) is free before the job is reaped.
+    job.parallel = nullptr;
+    job.in_order = nullptr;
     lock.lock();
     job.finished = true;
     ++next_in_order_;

@@ -16,7 +16,8 @@ namespace silva::ecs {
 /// A bounded, ordered asynchronous stage on the caller's TBB arena.
 class OrderedStage {
  public:
-  /// A stage holding at most `limit` (>= 1) unfinished jobs.
+  /// A stage holding at most `limit` unfinished jobs; with 0, submit() runs each job at once on
+  /// the calling thread (for a single-thread arena, where nothing could overlap).
   explicit OrderedStage(std::size_t limit);
   /// Waits for every job (errors are dropped here: call finish() to see them).
   ~OrderedStage();
@@ -31,6 +32,8 @@ class OrderedStage {
   void finish();
   /// Jobs submitted and not yet finished.
   std::size_t in_flight() const;
+  /// Changes the limit (see the constructor); waits for every job first.
+  void set_limit(std::size_t limit);
   /// True once a part of some job has thrown (finish() rethrows it).
   bool failed() const;
 

@@ -60,7 +60,8 @@ void create_output_folders(const std::filesystem::path& run_dir, const std::vect
 /// progress and total before the frames run): hands FrameSlots::current to the writer's stage:
 /// RGB shading and encoding in parallel, then the frame's files written atomically in frame order,
 /// its camera JSON last (its presence marks the frame complete). Waits for the oldest frame when
-/// kFramesInFlight - 1 are unfinished, so at most kFramesInFlight frames hold buffers.
+/// the stage's limit (kFramesInFlight - 1; 0 on one thread) is reached, so at most
+/// kFramesInFlight frames hold buffers.
 void install_write_dataset(ecs::World& world);
 
 }  // namespace silva::systems

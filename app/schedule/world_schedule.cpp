@@ -1,5 +1,6 @@
 #include "app/schedule/world_schedule.hpp"
 
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -83,6 +84,10 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   writer.stats = {};
   writer.progress = progress;
   writer.total = int(frames.size());
+  // One thread cannot overlap frames: write each before the next renders (one frame's buffers).
+  const size_t threads = std::min<size_t>(size_t(tbb::this_task_arena::max_concurrency()),
+                                          tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  writer.stage.set_limit(threads > 1 ? systems::kFramesInFlight - 1 : 0);
   const world::ChunkCache& cache = world_.resource<world::ChunkCache>();
   const size_t generated_before = cache.generated();
   double stream_s = 0, prepare_s = 0;

@@ -64,6 +64,19 @@ TEST(OrderedStage, OverlapsTheSubmitterWithEarlierJobs) {
   EXPECT_TRUE(overlapped);
 }
 
+TEST(OrderedStage, LimitZeroFinishesEachJobBeforeSubmitReturns) {
+  tbb::task_arena arena(2);
+  arena.execute([] {
+    OrderedStage stage(0);
+    for (int i = 0; i < 5; ++i) {
+      bool done = false;
+      stage.submit([] { std::this_thread::sleep_for(std::chrono::milliseconds(2)); }, [&done] { done = true; });
+      EXPECT_TRUE(done) << i;
+      EXPECT_EQ(stage.in_flight(), 0u);
+    }
+  });
+}
+
 TEST(OrderedStage, FinishRethrowsTheFirstErrorAndSkipsLaterInOrderParts) {
   std::vector<int> written;
   OrderedStage stage(2);
