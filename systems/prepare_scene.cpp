@@ -74,11 +74,9 @@ void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& librar
       .reads_resource<CaptureQueue, ViewChunks>()
       .writes_resource<world::ChunkCache, PreparedScene>()
       .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
-        PreparedScene& out = sys.resource<PreparedScene>();
-        out.ready = !sys.resource<const CaptureQueue>().active.is_null();
-        if (!out.ready) return;
+        if (sys.resource<const CaptureQueue>().active.is_null()) return;
         const auto& coords = sys.resource<const ViewChunks>().coords;
-        out.frame = builder.build(sys.resource<world::ChunkCache>().take(coords));
+        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords));
       });
 }
 

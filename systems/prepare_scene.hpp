@@ -34,10 +34,9 @@ class SceneBuilder {
 /// Per-instance colour-variation seed derived from an object's position (stable across runs).
 uint32_t variation_seed(const Vec3f& position);
 
-/// Resource: the scene the Render phase draws this frame (empty without an active camera).
+/// Resource: the scene the Render phase draws for the active camera (left as it was without one).
 struct PreparedScene {
   FrameScene frame;  ///< Scene and the chunk contents it points into.
-  bool ready = false;  ///< True when `frame` holds the active camera's view.
 };
 
 /// Registers "prepare_scene" (phase Prepare): takes the ViewChunks from the ChunkCache resource
