@@ -69,14 +69,14 @@ void render_cell(const assets::Asset& asset, const Mesh& ground, int size, std::
   render::Scene scene;
   scene.meshes.push_back({{&ground}, {}, {}});
   render::MeshLods lods;
-  for (const Mesh& m : asset.lods) lods.lods.push_back(&m);
+  for (const Mesh& m : asset.lods()) lods.lods.push_back(&m);
   lods.lod_screen_sizes = asset.lod_screen_sizes;
   scene.meshes.push_back(lods);
   for (auto& m : scene.meshes) m.compute_bounds();
   scene.instances.push_back({Affine3f::Identity(), 0, 0, 1});
   scene.instances.push_back({Affine3f::Identity(), 1, role_has_instances(asset.role) ? 1u : 0u, 7});
 
-  const Camera camera = framing_camera(asset.lods[0].bounds(), size);
+  const Camera camera = framing_camera(asset.lods()[0].bounds(), size);
   const render::LightingPreset preset = render::builtin_presets().at("day");
   render::Renderer renderer;
   render::GBuffer gbuffer;

@@ -16,6 +16,8 @@ namespace {
 
 struct AssetsArgs {
   std::string out;
+  bool glb = false;
+  uint32_t max_variants = UINT32_MAX;
   OutputFlags output;
 };
 
@@ -51,6 +53,8 @@ int build_assets(const AssetsArgs& args) {
   const Reporter reporter(args.output);
   AssetsBuildRequest request;
   request.out_dir = args.out;
+  request.glb = args.glb;
+  request.max_variants = args.max_variants;
   if (!args.out.empty()) check_writable_dir(request.out_dir);
   return run_assets_build(request, reporter);
 }
@@ -63,12 +67,18 @@ Handler add_assets_command(CLI::App& root) {
   assets->require_subcommand(1);
   CLI::App* build = assets->add_subcommand(
       "build",
-      "Generate every procedural asset (trees, dead trees, stumps, grass, ferns, shrubs, rocks, "
-      "logs) as .glb files plus library.json. The build runs this once into the build tree.");
+      "Generate every procedural asset variant and write library.json: each variant's class, collision "
+      "proxy and LOD thresholds, while its meshes are generated again when a run first draws it. "
+      "--glb also writes every variant as a .glb file (to inspect, edit or replace). The build runs "
+      "this once into the build tree.");
   build->add_option("--out", args->out, "folder for the library (default: the library folder Silva loads)")
       ->type_name("DIR");
+  build->add_flag("--glb", args->glb, "also write each variant's LOD meshes as <name>.glb (file entries)");
+  build->add_option("--variants", args->max_variants, "at most N variants per generator (default: all)")
+      ->check(CLI::Range(1, 1000))
+      ->type_name("N");
   add_output_flags(*build, args->output);
-  build->footer("Examples:\n  silva assets build --out build/assets\n  silva assets build --json");
+  build->footer("Examples:\n  silva assets build --out build/assets\n  silva assets build --glb --out my-assets --json");
 
   auto sheet_args = std::make_shared<SheetArgs>();
   sheet_args->request.seed = assets::kDefaultAssetSeed;

@@ -63,21 +63,21 @@ bool same_bytes(const Mesh& a, const Mesh& b) {
 
 void check_asset(const Factory& f, const Asset& a) {
   SCOPED_TRACE(a.name);
-  ASSERT_GE(a.lods.size(), 3u);
-  ASSERT_EQ(a.lod_screen_sizes.size(), a.lods.size() - 1);
-  for (size_t k = 0; k < a.lods.size(); ++k) {
-    test::expect_valid_mesh(a.lods[k], "lod" + std::to_string(k));
-    ASSERT_EQ(a.lods[k].parts.size(), a.lods[0].parts.size());
-    for (size_t p = 0; p < a.lods[k].parts.size(); ++p) EXPECT_EQ(a.lods[k].parts[p].role, a.lods[0].parts[p].role);
+  ASSERT_GE(a.lods().size(), 3u);
+  ASSERT_EQ(a.lod_screen_sizes.size(), a.lods().size() - 1);
+  for (size_t k = 0; k < a.lods().size(); ++k) {
+    test::expect_valid_mesh(a.lods()[k], "lod" + std::to_string(k));
+    ASSERT_EQ(a.lods()[k].parts.size(), a.lods()[0].parts.size());
+    for (size_t p = 0; p < a.lods()[k].parts.size(); ++p) EXPECT_EQ(a.lods()[k].parts[p].role, a.lods()[0].parts[p].role);
     if (k > 0) {
-      EXPECT_LT(a.lods[k].triangle_count(), a.lods[k - 1].triangle_count());
+      EXPECT_LT(a.lods()[k].triangle_count(), a.lods()[k - 1].triangle_count());
       EXPECT_GT(a.lod_screen_sizes[k - 1], 0.0f);
       if (k > 1) {
         EXPECT_LT(a.lod_screen_sizes[k - 1], a.lod_screen_sizes[k - 2]);
       }
     }
   }
-  const Mesh& m = a.lods[0];
+  const Mesh& m = a.lods()[0];
   EXPECT_LE(m.triangle_count(), f.kind == AssetKind::Grass ? 50u : 6000u);
   const std::set<Role> roles = allowed_roles(f.kind);
   for (const MeshPart& p : m.parts) EXPECT_TRUE(roles.count(p.role)) << role_name(p.role);
@@ -141,10 +141,10 @@ TEST(Factory, SameSeedSameBytesDifferentSeedDifferentMesh) {
   for (const Factory& f : factories()) {
     SCOPED_TRACE(f.prefix);
     const Asset a = make_asset(f, 5, 1), b = make_asset(f, 5, 1);
-    ASSERT_EQ(a.lods.size(), b.lods.size());
-    for (size_t k = 0; k < a.lods.size(); ++k) EXPECT_TRUE(same_bytes(a.lods[k], b.lods[k]));
-    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 6, 1).lods[0]));
-    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 5, 2).lods[0]));
+    ASSERT_EQ(a.lods().size(), b.lods().size());
+    for (size_t k = 0; k < a.lods().size(); ++k) EXPECT_TRUE(same_bytes(a.lods()[k], b.lods()[k]));
+    EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 6, 1).lods()[0]));
+    EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 5, 2).lods()[0]));
   }
 }
 
@@ -158,7 +158,10 @@ TEST(Factory, GenerateLibraryIndexesKindsAndNamesAreUnique) {
   for (size_t k = 0; k < size_t(AssetKind::Count); ++k)
     for (uint32_t i : lib.by_kind[k]) EXPECT_EQ(size_t(lib.assets[i].kind), k);
   EXPECT_EQ(lib.assets[0].name, "conifer_00");
-  EXPECT_EQ(lib.assets[0].file, "conifer_00.glb");
+  EXPECT_EQ(lib.assets[0].file, "");  // procedural: no file
+  ASSERT_TRUE(lib.assets[0].source.has_value());
+  EXPECT_EQ(lib.assets[0].source->generator, "conifer");
+  EXPECT_EQ(lib.assets[0].source->seed, 3u);
 }
 
 }  // namespace
