@@ -98,10 +98,21 @@ void blit(const std::vector<uint8_t>& view, int size, std::vector<uint8_t>& shee
 
 }  // namespace
 
-std::vector<const assets::Factory*> select_factories(const std::string& name) {
+std::vector<const assets::Factory*> select_factories(const std::string& names) {
   std::vector<const assets::Factory*> out;
-  for (const assets::Factory& f : assets::factories())
-    if (name == assets::kind_name(f.kind) || name == f.prefix) out.push_back(&f);
+  size_t start = 0;
+  while (start <= names.size()) {
+    const size_t comma = std::min(names.find(',', start), names.size());
+    const std::string name = names.substr(start, comma - start);
+    size_t matched = 0;
+    for (const assets::Factory& f : assets::factories())
+      if (name == assets::kind_name(f.kind) || name == f.prefix) {
+        ++matched;
+        if (std::find(out.begin(), out.end(), &f) == out.end()) out.push_back(&f);
+      }
+    if (matched == 0) return {};
+    start = comma + 1;
+  }
   return out;
 }
 

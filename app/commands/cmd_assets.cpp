@@ -41,7 +41,8 @@ std::string sheet_names() {
 int sheet_assets(SheetArgs& args) {
   const Reporter reporter(args.output);
   if (select_factories(args.request.kind).empty())
-    throw InputError("--kind " + args.request.kind + ": unknown; expected a kind (" + sheet_names() + ")");
+    throw InputError("--kind " + args.request.kind + ": unknown name; expected kinds or generators, comma-separated (" +
+                     sheet_names() + ")");
   args.request.out = args.out;
   if (args.request.out.extension() != ".png") throw InputError("--out " + args.out + ": expected a .png file");
   const auto parent = args.request.out.parent_path();
@@ -86,7 +87,8 @@ Handler add_assets_command(CLI::App& root) {
       "sheet",
       "Render a contact sheet of built-in asset variants: each variant alone on a flat forest floor "
       "in the day preset, its RGB view beside its semantic colours, variants row by row.");
-  sheet->add_option("--kind", sheet_args->request.kind, "a kind (" + sheet_names() + ")")
+  sheet->add_option("--kind", sheet_args->request.kind,
+                    "comma-separated kinds or generators (" + sheet_names() + ")")
       ->required()
       ->type_name("NAME");
   sheet->add_option("--out", sheet_args->out, "PNG file to write")->required()->type_name("FILE.png");
@@ -99,7 +101,9 @@ Handler add_assets_command(CLI::App& root) {
   sheet->add_option("--seed", sheet_args->request.seed, "asset seed (default: the library's)");
   add_output_flags(*sheet, sheet_args->output);
   sheet->footer("Examples:\n  silva assets sheet --kind conifer_tree --out conifers.png\n"
-                "  silva assets sheet --kind rock --count 9 --columns 3 --out rocks.png");
+                "  silva assets sheet --kind rock --count 9 --columns 3 --out rocks.png\n"
+                "  silva assets sheet --kind conifer_tree,broadleaf_tree --count 4 --columns 4 --out trees.png "
+                "(one row per generator)");
   return [args, sheet_args, build] {  // exactly one of build, sheet was parsed (require_subcommand(1))
     if (build->parsed()) return build_assets(*args);
     return sheet_assets(*sheet_args);
