@@ -2,6 +2,7 @@
 // columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and grain parts.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <limits>
 
 #include <tbb/parallel_for.h>
@@ -45,9 +46,10 @@ GBuffer bench_gbuffer(const Camera& cam) {
       g.normal[i] = trunk || canopy ? Vec3f(-1, 0, 0) : Vec3f(0, 0, 1);
       g.material[i] = trunk    ? Material::BarkConifer
                       : canopy ? Material::Needles
-                      : std::abs(p.y()) < 0.75 ? Material::Trail
+                      : std::abs(p.y()) < 1.35 ? Material::Trail
                                                : Material::Ground;
-      g.uv[i] = Vec2f(float((p.y() + 0.75) / 1.5), float(p.x()));
+      // As the terrain carries it: signed distance to the trail's edge, arc length along it.
+      g.uv[i] = Vec2f(float(std::abs(p.y()) - 0.75), float(p.x()));
       g.variation[i] = uint32_t(u / 97);
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Triangle meshes with per-part semantic roles and materials.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct AlphaMask {
   }
 };
 
+/// A second role and material painted into a part by its uv.x (a signed distance in metres to the
+/// overlay's edge, negative inside): render/surface_overlay.hpp turns it into a blend weight with a
+/// ragged edge; pixels whose weight reaches 0.5 take `role`, those it touches take `material`.
+struct PartOverlay {
+  Role role = Role::Trail;              ///< Class where the overlay weight is at least 0.5.
+  Material material = Material::Trail;  ///< Material that blends the overlay into the part's own look.
+};
+
 /// A contiguous range of triangles sharing a role, material and mask.
 struct MeshPart {
   uint32_t first_index = 0;    ///< Offset into Mesh::indices (multiple of 3).
@@ -40,6 +49,7 @@ struct MeshPart {
   std::shared_ptr<const BaseColor> base_color;  ///< The asset file's own colour, or null: procedural albedo.
   std::shared_ptr<const AlphaMask> mask;  ///< Alpha mask (foliage cards), or null.
   bool double_sided = false;   ///< Disable back-face culling for this part.
+  std::optional<PartOverlay> overlay;  ///< Painted by uv.x (the trail in the terrain), or none.
 };
 
 /// Indexed triangle mesh in object space (metres, Z up), counter-clockwise front faces.

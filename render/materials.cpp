@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/shading_noise.hpp"
+#include "render/trail_material.hpp"
 
 namespace silva::render {
 
@@ -10,8 +11,6 @@ namespace {
 
 /// Noise salts: one per independent pattern so patterns never repeat each other.
 enum Salt : uint32_t {
-  kTrailFine = 0x400,
-  kTrailPebble = 0x500,
   kBarkStreak = 0x600,
   kBarkLichen = 0x700,
   kFoliage = 0x800,
@@ -39,24 +38,6 @@ Vec3f ground(const SurfacePoint& s) {
   Vec3f c;
   const float footprint = 0.0f;
   ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c);
-  return c;
-}
-
-/// Packed dirt of the trail, pebbly; its edges (uv.x near 0 or 1) fade into the ground.
-/// Expects the trail mesh to carry uv.x in [0, 1] across its width (world/trail.cpp does);
-/// a uv.x outside (0, 1) is taken as "no across-coordinate" and gets no edge blend.
-Vec3f trail(const SurfacePoint& s) {
-  const Vec3f& p = s.position;
-  const Vec3f dirt(0.2f, 0.16f, 0.11f), pebble(0.3f, 0.28f, 0.25f);
-  const float fine = fbm2(p.x() * 3.0f, p.y() * 3.0f, 3, kTrailFine);
-  Vec3f c = dirt * (0.8f + 0.4f * fine);
-  c = lerp(c, pebble, smoothstep(0.85f, 0.92f, value_noise2(p.x() * 30.0f, p.y() * 30.0f, kTrailPebble)));
-  const float u = s.uv.x();
-  if (u > 0.0f && u < 1.0f) {
-    const float edge = std::min(u, 1.0f - u);
-    const float ragged = 0.08f * value_noise2(p.x() * 2.0f, p.y() * 2.0f, kTrailPebble + 1);
-    c = lerp(ground(s), c, smoothstep(0.02f, 0.22f, edge + ragged));
-  }
   return c;
 }
 
@@ -113,7 +94,7 @@ Vec3f wood(const SurfacePoint& s) {
 Vec3f material_albedo(const SurfacePoint& s) {
   switch (s.material) {
     case Material::Ground: return ground(s);
-    case Material::Trail: return trail(s);
+    case Material::Trail: return trail_albedo(s);
     case Material::BarkConifer: return bark(s, Vec3f(0.15f, 0.085f, 0.055f), 0.45f, 0.0f);
     case Material::BarkBroadleaf: return bark(s, Vec3f(0.2f, 0.18f, 0.15f), 0.25f, 0.6f);
     case Material::BarkDead: return bark(s, Vec3f(0.33f, 0.31f, 0.28f), 0.5f, 0.0f);

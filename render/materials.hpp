@@ -12,7 +12,7 @@ namespace silva::render {
 struct SurfacePoint {
   Vec3f position;      ///< World position (metres, Z up).
   Vec3f normal;        ///< Unit world normal facing the camera.
-  Vec2f uv;            ///< Mesh texture coordinates (trail: uv.x across its width, in [0, 1]).
+  Vec2f uv;            ///< Mesh texture coordinates (trail: render/trail_material.hpp).
   Material material;   ///< Which procedural material.
   uint32_t variation;  ///< Per-instance variation seed.
 };

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/raster_conventions.hpp"
+#include "render/surface_overlay.hpp"
 
 namespace silva::render {
 
@@ -122,6 +123,11 @@ void write_hit(const Camera& cam, const HitTriangle& h, int u, int v, GBuffer& g
   g.uv[i] = uv;
   g.role[i] = h.part->role;
   g.material[i] = h.part->material;
+  if (h.part->overlay && uv.x() < kOverlayMargin + kOverlayRagged) {
+    const float edge = overlay_edge(uv.x(), g.position[i]);
+    if (edge < kOverlayMargin) g.material[i] = h.part->overlay->material;
+    if (overlay_weight(edge) >= 0.5f) g.role[i] = h.part->overlay->role;
+  }
   g.base_color[i] = h.part->base_color ? pack_srgb8(h.part->base_color->albedo(uv.x(), uv.y())) : 0;
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Generate phase: terrain and trail meshes of new chunks (system "generate_terrain").
+/// @file Generate phase: terrain meshes of new chunks, the trail painted in (system "generate_terrain").
 #include "ecs/world.hpp"
 
 namespace silva::systems {

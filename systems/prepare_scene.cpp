@@ -69,7 +69,6 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
   };
   for (const auto& c : chunks) {
     add_world_mesh(c->terrain, &c->terrain_lod, c->terrain_bounds);
-    add_world_mesh(c->trail, nullptr, AABB{});
     for (const Vegetation& v : c->objects) {
       render::Instance inst;
       inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);

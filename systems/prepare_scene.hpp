@@ -14,17 +14,17 @@ namespace silva::systems {
 /// A scene plus the chunk contents its meshes point into (kept alive while it is drawn).
 struct FrameScene {
   render::Scene scene;                                        ///< What the renderer draws.
-  std::vector<std::shared_ptr<const ChunkContent>> chunks;    ///< Owners of terrain/trail meshes.
+  std::vector<std::shared_ptr<const ChunkContent>> chunks;    ///< Owners of the terrain meshes.
 };
 
 /// Builds frame scenes; asset meshes come first (mesh index = asset index), then per-chunk
-/// terrain (with its coarse level as LOD 1) and trail meshes. Stuff (terrain, trail, grass,
-/// ferns) has instance id 0.
+/// terrain (with its coarse level as LOD 1; the trail is painted into it). Stuff (terrain, trail,
+/// grass, ferns) has instance id 0.
 class SceneBuilder {
  public:
   /// A builder for `library`'s assets (which must outlive it); no asset meshes are made yet.
   explicit SceneBuilder(const assets::AssetLibrary& library);
-  /// Scene of the given chunks: terrain, trail piece and every object of each, in chunk order.
+  /// Scene of the given chunks: terrain (trail included) and every object of each, in chunk order.
   /// Makes the meshes of assets drawn for the first time (in parallel); copies share them.
   FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
 

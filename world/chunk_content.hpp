@@ -39,8 +39,8 @@ struct ChunkStats {
   uint32_t ground_dropped = 0;   ///< Grass/ferns removed because they met a solid.
   uint64_t broad_queries = 0;    ///< Broad-phase (grid) queries.
   uint64_t narrow_queries = 0;   ///< Narrow-phase fcl::collide calls.
-  uint64_t triangles = 0;        ///< Terrain + trail triangles.
-  double generate_s = 0;         ///< Terrain + trail mesh time (not part of the content hash).
+  uint64_t triangles = 0;        ///< Terrain triangles (the trail is part of the terrain).
+  double generate_s = 0;         ///< Terrain mesh time (not part of the content hash).
   double place_s = 0;            ///< Placement time, own and neighbour candidates.
   double resolve_s = 0;          ///< Resolve time.
 };
@@ -51,7 +51,6 @@ struct ChunkContent {
   Mesh terrain;                     ///< Terrain mesh in world coordinates (role Ground).
   Mesh terrain_lod;                 ///< Coarse terrain level for drawing: built when the chunk is first drawn, empty otherwise.
   AABB terrain_bounds;              ///< Bounds of terrain (terrain_lod uses its vertices): set with terrain_lod, else empty.
-  Mesh trail;                       ///< Trail piece in world coordinates (empty if none crosses).
   std::vector<Vegetation> objects;  ///< Final objects in (grid point, sub) order.
   ChunkStats stats;                 ///< Counters and timings.
 };

@@ -126,10 +126,16 @@ ClassMap render_class_map(const BuiltWorld& world, double chunk_size, const asse
     canvas.disc(v->position.x(), v->position.y(), t.radius * v->scale, t.role);
   }
   // Plan overlays: the trail over the canopy, then every solid's footprint in its own class.
-  for (const ChunkContent& c : world.chunks)
-    for (size_t k = 0; k + 2 < c.trail.indices.size(); k += 3)
-      canvas.triangle(c.trail.positions[c.trail.indices[k]], c.trail.positions[c.trail.indices[k + 1]],
-                      c.trail.positions[c.trail.indices[k + 2]], Role::Trail);
+  for (const ChunkContent& c : world.chunks) {
+    const Mesh& t = c.terrain;
+    if (t.parts.empty() || !t.parts[0].overlay) continue;
+    for (size_t k = 0; k + 2 < t.indices.size(); k += 3) {
+      const uint32_t a = t.indices[k], b = t.indices[k + 1], d = t.indices[k + 2];
+      // The overlay's edge coordinate (uv.x) is negative on the trail: test the triangle's centroid.
+      if (t.uvs[a].x() + t.uvs[b].x() + t.uvs[d].x() < 0.0f)
+        canvas.triangle(t.positions[a], t.positions[b], t.positions[d], t.parts[0].overlay->role);
+    }
+  }
   for (const Vegetation* v : objects) {
     const assets::Asset& a = library.assets[v->asset];
     if (a.proxy.shape == assets::CollisionProxy::Shape::None) continue;

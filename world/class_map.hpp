@@ -2,7 +2,7 @@
 /// @file A top-down orthographic class map of a built world (a splat, not the rasteriser):
 /// ground; every object as a disc of its asset's top-view radius in the colour of the class
 /// seen from above (canopy for trees), taller objects over lower ones; then, as plan overlays,
-/// the trail triangles and each solid's collision footprint in its own class (trunk, stump...).
+/// the trail (terrain triangles whose centroid lies on its overlay) and each solid's collision footprint in its own class (trunk, stump...).
 #include <cstdint>
 #include <vector>
 

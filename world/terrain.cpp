@@ -1,5 +1,6 @@
 #include "world/terrain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -9,9 +10,31 @@ namespace silva::world {
 
 namespace {
 
+/// Natural (unshaped) height of the function at world (x, y).
+double natural_height(const TerrainField& f, double x, double y) { return f.max_elevation * fbm2(f.noise, x, y); }
+
+/// Height of the function at world (x, y), with the nearest trail point `p` already found.
+double height_near(const TerrainField& f, const TrailPoint& p, double x, double y) {
+  const double natural = natural_height(f, x, y);
+  return f.trail ? shaped_height(*f.trail, p, natural) : natural;
+}
+
+/// Height of the function at world (x, y).
+double height_at(const TerrainField& f, double x, double y) {
+  return height_near(f, f.trail ? nearest_trail_point(*f.trail, x, y) : TrailPoint{}, x, y);
+}
+
 /// Height of the function at global vertex-grid index (gx, gy).
 double grid_height(const TerrainField& f, int64_t gx, int64_t gy) {
-  return f.max_elevation * fbm2(f.noise, double(gx) * f.vertex_spacing, double(gy) * f.vertex_spacing);
+  return height_at(f, double(gx) * f.vertex_spacing, double(gy) * f.vertex_spacing);
+}
+
+/// Terrain uv of a point whose nearest trail point is `p`: (distance to the trail edge, at most
+/// the shoulder; arc length along the trail where a centre-line point is near, else 0).
+Vec2f trail_uv(const TerrainField& f, const TrailPoint& p) {
+  if (!f.trail) return Vec2f(float(kTrailShoulder), 0.0f);
+  const double d = std::min(p.distance, f.trail->reach());
+  return Vec2f(float(d - f.trail->half_width), std::isfinite(p.distance) ? float(p.along) : 0.0f);
 }
 
 /// Unit normal from heights one spacing to each side (central differences).
@@ -35,12 +58,13 @@ TerrainField make_terrain_field(const Config& cfg) {
   f.noise.offset_y = rng.uniform_double() * 4096.0 - 2048.0;
   f.max_elevation = cfg.terrain.max_elevation;
   f.vertex_spacing = cfg.terrain.vertex_spacing;
+  if (cfg.trail.enabled)
+    f.trail = std::make_shared<const TrailPath>(
+        make_trail_path(cfg, [&f](double x, double y) { return natural_height(f, x, y); }));
   return f;
 }
 
-float terrain_height(const TerrainField& field, double x, double y) {
-  return float(field.max_elevation * fbm2(field.noise, x, y));
-}
+float terrain_height(const TerrainField& field, double x, double y) { return float(height_at(field, x, y)); }
 
 float surface_height(const TerrainField& field, double x, double y) {
   const double gxf = std::floor(x / field.vertex_spacing);
@@ -62,10 +86,8 @@ float surface_height(const TerrainField& field, double x, double y) {
 
 Vec3f terrain_normal(const TerrainField& field, double x, double y) {
   const double d = field.vertex_spacing;
-  return normal_from_differences(field.max_elevation * fbm2(field.noise, x - d, y),
-                                 field.max_elevation * fbm2(field.noise, x + d, y),
-                                 field.max_elevation * fbm2(field.noise, x, y - d),
-                                 field.max_elevation * fbm2(field.noise, x, y + d), d);
+  return normal_from_differences(height_at(field, x - d, y), height_at(field, x + d, y), height_at(field, x, y - d),
+                                 height_at(field, x, y + d), d);
 }
 
 Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord coord) {
@@ -73,8 +95,16 @@ Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord
   const int side = n + 3;  // one extra ring of samples for the central differences
   const int64_t gx0 = int64_t(coord.i) * n - 1, gy0 = int64_t(coord.j) * n - 1;
   std::vector<double> h(size_t(side) * side);
+  std::vector<Vec2f> uv(size_t(side) * side);
+  bool trail_near = false;
   for (int y = 0; y < side; ++y)
-    for (int x = 0; x < side; ++x) h[size_t(y) * side + x] = grid_height(field, gx0 + x, gy0 + y);
+    for (int x = 0; x < side; ++x) {
+      const double wx = double(gx0 + x) * field.vertex_spacing, wy = double(gy0 + y) * field.vertex_spacing;
+      const TrailPoint p = field.trail ? nearest_trail_point(*field.trail, wx, wy) : TrailPoint{};
+      h[size_t(y) * side + x] = height_near(field, p, wx, wy);
+      uv[size_t(y) * side + x] = trail_uv(field, p);
+      trail_near = trail_near || (field.trail && p.distance < field.trail->reach());
+    }
   auto at = [&](int x, int y) { return h[size_t(y + 1) * side + (x + 1)]; };
 
   Mesh m;
@@ -89,7 +119,7 @@ Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord
       m.positions.emplace_back(float(wx), float(wy), float(at(x, y)));
       m.normals.push_back(normal_from_differences(at(x - 1, y), at(x + 1, y), at(x, y - 1), at(x, y + 1),
                                                   field.vertex_spacing));
-      m.uvs.emplace_back(float(wx / kGroundUvMetres), float(wy / kGroundUvMetres));
+      m.uvs.push_back(uv[size_t(y + 1) * side + (x + 1)]);
     }
   }
   m.indices.reserve(size_t(n) * n * 6);
@@ -104,6 +134,7 @@ Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord
   part.index_count = uint32_t(m.indices.size());
   part.role = Role::Ground;
   part.material = Material::Ground;
+  if (trail_near) part.overlay = PartOverlay{Role::Trail, Material::Trail};
   m.parts.push_back(part);
   return m;
 }

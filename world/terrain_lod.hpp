@@ -1,16 +1,15 @@
 #pragma once
 /// @file The coarser level of a chunk's terrain mesh: simplified by meshoptimizer within a fixed
 /// geometric error, with the chunk border locked, so that neighbouring chunks drawn at either
-/// level still share every border vertex and edge (no cracks, no T-junctions).
+/// level still share every border vertex and edge (no cracks, no T-junctions); the trail's band
+/// is kept at full detail.
 #include "core/mesh.hpp"
 
 namespace silva::world {
 
 /// Simplification error allowed in the coarse terrain level (meshoptimizer's measure, metres). The
 /// largest height change it lets through is up to about twice that (1.8 cm on 3 m relief, see
-/// terrain_lod_test), well below the trail's lift above the ground (kTrailLift), so the coarser
-/// ground never covers the trail; where the level is drawn (kTerrainLodScreenSize) it projects to
-/// under 0.3 px.
+/// terrain_lod_test); where the level is drawn (kTerrainLodScreenSize) it projects to under 0.3 px.
 inline constexpr float kTerrainLodError = 0.01f;
 
 /// Projected-size threshold of the coarse terrain level (fraction of image height, as
@@ -20,8 +19,10 @@ inline constexpr float kTerrainLodError = 0.01f;
 inline constexpr float kTerrainLodScreenSize = 1.2f;
 
 /// The coarse level of terrain chunk mesh `full` (one part): the fewest triangles within
-/// kTerrainLodError, border locked. Empty (no triangles) when that does not shrink the mesh or
-/// the mesh is not a one-part terrain mesh.
+/// kTerrainLodError, border locked. Triangles with a vertex within the trail's shoulder (uv.x <
+/// kTrailShoulder, where the part has an overlay) are kept as they are, so the trail's edge
+/// coordinate and its label edge stay exact at either level. Empty (no triangles) when that does
+/// not shrink the mesh or the mesh is not a one-part terrain mesh.
 Mesh build_terrain_lod(const Mesh& full);
 
 }  // namespace silva::world

@@ -25,8 +25,7 @@ void assign_instance_ids(ChunkCoord coord, std::vector<Vegetation>& objects) {
 void add_terrain(const WorldContext& ctx, ChunkContent& chunk) {
   const Stopwatch clock;
   chunk.terrain = build_terrain_mesh(ctx.terrain, ctx.chunk_size(), chunk.coord);
-  chunk.trail = build_trail_mesh(ctx.trail, ctx.chunk_size(), chunk.coord);
-  chunk.stats.triangles = chunk.terrain.triangle_count() + chunk.trail.triangle_count();
+  chunk.stats.triangles = chunk.terrain.triangle_count();
   chunk.stats.generate_s = clock.seconds();
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-/// @file The chunk generation façade: terrain + trail piece + placement + resolve of one chunk.
+/// @file The chunk generation façade: terrain (trail included) + placement + resolve of one chunk.
 #include "world/chunk_content.hpp"
 #include "world/placement.hpp"
 #include "world/resolve.hpp"
@@ -15,7 +15,7 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const ChunkCandidates& own,
                             const CandidateLookup& neighbours);
 
-/// Sets `chunk`'s terrain and trail meshes (the Generate phase's work) and their stats.
+/// Sets `chunk`'s terrain mesh, the trail painted into it (the Generate phase's work), and its stats.
 void add_terrain(const WorldContext& ctx, ChunkContent& chunk);
 
 /// Sets `chunk`'s final objects, ids assigned, and their counters (the Resolve phase's work);

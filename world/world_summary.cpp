@@ -24,7 +24,8 @@ void feed_mesh(XXH3_state_t* st, const Mesh& m) {
   feed(st, m.uvs);
   XXH3_64bits_update(st, m.indices.data(), m.indices.size() * sizeof(uint32_t));
   for (const MeshPart& p : m.parts) {
-    const uint32_t w[4] = {p.first_index, p.index_count, uint32_t(p.role), uint32_t(p.material)};
+    const uint32_t overlay = p.overlay ? 1u << 16 | uint32_t(p.overlay->role) << 8 | uint32_t(p.overlay->material) : 0u;
+    const uint32_t w[5] = {p.first_index, p.index_count, uint32_t(p.role), uint32_t(p.material), overlay};
     XXH3_64bits_update(st, w, sizeof w);
   }
 }
@@ -34,7 +35,6 @@ void feed_chunk(XXH3_state_t* st, const ChunkContent& c) {
   const int32_t ij[2] = {c.coord.i, c.coord.j};
   XXH3_64bits_update(st, ij, sizeof ij);
   feed_mesh(st, c.terrain);
-  feed_mesh(st, c.trail);
   for (const Vegetation& v : c.objects) {
     const uint32_t w[4] = {v.asset, uint32_t(v.role), uint32_t(v.placement), v.instance_id};
     const float f[5] = {v.position.x(), v.position.y(), v.position.z(), v.yaw, v.scale};

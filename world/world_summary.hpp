@@ -12,7 +12,7 @@ namespace silva::world {
 /// Sums over a built world.
 struct WorldTotals {
   uint64_t chunks = 0;                                  ///< Chunks built.
-  uint64_t triangles = 0;                               ///< Terrain + trail triangles.
+  uint64_t triangles = 0;                               ///< Terrain triangles (the trail is part of the terrain).
   std::array<uint64_t, kRoleCount> objects_by_role{};   ///< Final objects per class (role).
   uint64_t objects = 0;                                 ///< All final objects.
   uint64_t candidates = 0;                              ///< Placement proposals in the built chunks.
@@ -23,8 +23,8 @@ struct WorldTotals {
   uint64_t broad_queries = 0;                           ///< Broad-phase queries.
   uint64_t narrow_queries = 0;                          ///< Narrow-phase fcl::collide calls.
   double place_s = 0;      ///< Wall time of the Place phase (all candidates).
-  double chunks_s = 0;     ///< Wall time of the Generate (terrain/trail) and Resolve phases.
-  double terrain_cpu_s = 0;  ///< Summed per-chunk terrain + trail mesh time.
+  double chunks_s = 0;     ///< Wall time of the Generate (terrain) and Resolve phases.
+  double terrain_cpu_s = 0;  ///< Summed per-chunk terrain mesh time.
   double resolve_cpu_s = 0;  ///< Summed per-chunk resolve time.
   double total_s = 0;      ///< Wall time of the whole build.
 };

@@ -37,10 +37,10 @@ io::GltfDocument world_document(const BuiltWorld& world, const assets::AssetLibr
     node.name = name;
     node.mesh = int(doc.meshes.size() - 1);
     node.extras = {{"class_id", ontology.id(role)}, {"instance_id", 0}};
+    if (mesh.parts[0].overlay) node.extras["overlay_class_id"] = ontology.id(mesh.parts[0].overlay->role);
     add_node(std::move(node));
   };
   for (const ChunkContent& c : world.chunks) add_world_mesh(c.terrain, chunk_name("terrain", c.coord), Role::Ground);
-  for (const ChunkContent& c : world.chunks) add_world_mesh(c.trail, chunk_name("trail", c.coord), Role::Trail);
 
   // Asset meshes are shared: mesh index = first asset mesh + asset index.
   const int first_asset_mesh = int(doc.meshes.size());

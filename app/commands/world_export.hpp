@@ -1,6 +1,6 @@
 #pragma once
 /// @file The world as one glTF document (CONTRACT.md "World export"): root `silva_world` (Z-up to
-/// Y-up), terrain chunks by (i, j), trail pieces, then objects by instance id.
+/// Y-up), terrain chunks by (i, j) (the trail painted in), then objects by instance id.
 #include "assets/library.hpp"
 #include "core/ontology.hpp"
 #include "io/gltf_writer.hpp"

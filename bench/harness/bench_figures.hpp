@@ -14,7 +14,7 @@ namespace silva::app {
 struct WorkCounts {
   uint64_t objects = 0;    ///< Placed objects in the built world(s).
   uint64_t chunks = 0;     ///< Chunks built or streamed.
-  uint64_t triangles = 0;  ///< Terrain + trail triangles (generation) or triangles submitted (capture).
+  uint64_t triangles = 0;  ///< Terrain triangles (generation) or triangles submitted (capture).
   uint64_t frames = 0;     ///< Capture sets rendered and written.
   uint64_t pixels = 0;     ///< frames x width x height.
   uint64_t bytes = 0;      ///< Bytes written to disk.

@@ -31,7 +31,7 @@ struct WorldProfile {
   double canopy_cover_pct = 0;     ///< Ground under tree canopy (crowns of assets with canopy parts), %.
   uint64_t broad_queries = 0;      ///< Broad-phase queries of overlap resolution.
   uint64_t narrow_queries = 0;     ///< Narrow-phase fcl::collide calls.
-  double generate_ms_per_chunk = 0;  ///< Terrain + trail mesh, mean per chunk (ms).
+  double generate_ms_per_chunk = 0;  ///< Terrain mesh (trail included), mean per chunk (ms).
   double place_ms_per_chunk = 0;     ///< Placement of the chunk's own candidates, mean per chunk (ms).
   double resolve_ms_per_chunk = 0;   ///< Overlap resolution, mean per chunk (ms).
   double build_s = 0;              ///< Wall time of build_world.

@@ -58,7 +58,7 @@ TEST(WorldBuild, TotalsAddUp) {
   uint64_t objects = 0, triangles = 0;
   for (const ChunkContent& c : w.chunks) {
     objects += c.objects.size();
-    triangles += c.terrain.triangle_count() + c.trail.triangle_count();
+    triangles += c.terrain.triangle_count();
   }
   EXPECT_EQ(w.totals.objects, objects);
   EXPECT_EQ(w.totals.triangles, triangles);
