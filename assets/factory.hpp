@@ -1,6 +1,7 @@
 #pragma once
-/// @file The built-in asset factories (Infinigen habit): each variant i of a factory is seeded by
-/// hash(seed, kind, i), so a variant never depends on which other variants were generated.
+/// @file The built-in asset factories (Infinigen habit): variant i of a kind's first factory is seeded
+/// by hash(seed, kind, i), of its further factories by hash(seed, kind, i, stream), so a variant never
+/// depends on which other variants were generated. Several factories may share a kind.
 #include <cstdint>
 #include <span>
 
@@ -18,9 +19,10 @@ struct Factory {
   const char* prefix;                 ///< Asset names are "<prefix>_<ii>".
   uint32_t variants;                  ///< Variants in the built-in library.
   GeneratedAsset (*generate)(Rng&);   ///< The generator.
+  uint32_t stream = 0;                ///< 0 for a kind's first factory, 1, 2, ... for the others.
 };
 
-/// Every built-in factory, in library order (AssetKind order).
+/// Every built-in factory, in library order (AssetKind order, then stream).
 std::span<const Factory> factories();
 
 /// Runs `factory` for `variant` (RNG keyed by the kind and variant, Purpose::AssetShape) and

@@ -1,4 +1,5 @@
 #include "assets/alpha_masks.hpp"
+#include "assets/understory_masks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,6 +30,18 @@ TEST(AlphaMasks, AllAreBinarySquareAndPartlyOpaque) {
     EXPECT_LT(coverage(*mask), 0.75);
     EXPECT_EQ(mask->cutoff, 0.5f);
   }
+}
+
+TEST(AlphaMasks, UnderstoryMasksAreBinaryAndPartlyOpaque) {
+  for (const auto& mask : {pinnate_frond_mask(), grass_tuft_mask(), grass_seed_mask(), bilberry_leaves_mask(),
+                           hazel_leaves_mask(), bramble_leaf_mask(), litter_leaves_mask()}) {
+    ASSERT_EQ(mask->alpha.size(), size_t(mask->width) * size_t(mask->height));
+    for (uint8_t a : mask->alpha) ASSERT_TRUE(a == 0 || a == 255);
+    EXPECT_GT(coverage(*mask), 0.08);
+    EXPECT_LT(coverage(*mask), 0.75);
+  }
+  const AlphaMask& g = *grass_tuft_mask();
+  EXPECT_GT(row_coverage(g, g.height - 1), 3 * row_coverage(g, 4));  // blades rise from the bottom
 }
 
 TEST(AlphaMasks, SharedAcrossCalls) { EXPECT_EQ(leaf_cluster_mask(), leaf_cluster_mask()); }
