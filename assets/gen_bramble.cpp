@@ -12,7 +12,7 @@ namespace silva::assets {
 GeneratedAsset generate_bramble(Rng& rng) {
   constexpr float kPi = std::numbers::pi_v<float>;
   const float height = rng.range(0.5f, 1.5f);
-  const int count = 4 + int(rng.below(6));
+  const int count = 6 + int(rng.below(7));
   std::vector<StemNodes> canes;
   float reach = 0;
   for (int i = 0; i < count; ++i) {
@@ -28,9 +28,9 @@ GeneratedAsset generate_bramble(Rng& rng) {
   MeshBuilder b;
   add_stems(b, canes, Role::Shrub, Material::BarkConifer);
   b.begin_part(Role::Shrub, Material::ShrubLeaves, bramble_leaf_mask(), true);
-  const float leaf = rng.range(0.12f, 0.2f) * std::sqrt(height);
+  const float leaf = rng.range(0.2f, 0.28f) * std::sqrt(height);
   for (const StemNodes& c : canes) {
-    const int leaves = 10 + int(rng.below(8));
+    const int leaves = 14 + int(rng.below(8));
     for (int k = 0; k < leaves; ++k) {
       const float t = 0.15f + 0.85f * (float(k) + rng.uniform()) / float(leaves);
       const Vec3f at = stem_point(c, t), along = stem_point(c, t + 0.05f) - stem_point(c, t - 0.05f);

@@ -37,7 +37,7 @@ GeneratedAsset generate_fern(Rng& rng) {
   const FernClass& cls = kClasses[rng.below(3)];
   const float height = rng.range(cls.min_h, cls.max_h);
   const int fronds = cls.min_fronds + int(rng.below(uint32_t(cls.max_fronds - cls.min_fronds + 1)));
-  const float rise = rng.range(55.0f, 80.0f) * kPi / 180.0f, droop = rng.range(35.0f, 75.0f) * kPi / 180.0f;
+  const float rise = rng.range(45.0f, 70.0f) * kPi / 180.0f, droop = rng.range(55.0f, 100.0f) * kPi / 180.0f;
   const float width_ratio = rng.range(0.11f, 0.15f);  // frond half-width / length
   struct Frond {
     std::vector<Vec3f> rachis;

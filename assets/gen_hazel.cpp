@@ -41,7 +41,7 @@ GeneratedAsset generate_hazel(Rng& rng) {
   for (int i = 0; i < count; ++i) {
     const float az = 2.0f * kPi * (float(i) + rng.range(-0.4f, 0.4f)) / float(count);
     stems.push_back(hazel_stem(rng, height, az, rng.range(0.08f, 0.4f), rng.range(0.015f, 0.04f)));
-    const int n = 3 + int(rng.below(3));
+    const int n = 4 + int(rng.below(3));
     for (int k = 0; k < n; ++k) branches.push_back(hazel_branch(rng, stems.back(), rng.range(0.35f, 0.9f), height, az));
   }
   float reach = 0;
@@ -52,9 +52,9 @@ GeneratedAsset generate_hazel(Rng& rng) {
   MeshBuilder b;
   add_stems(b, all, Role::Shrub, Material::BarkBroadleaf);
   b.begin_part(Role::Shrub, Material::ShrubLeaves, hazel_leaves_mask(), true);
-  const float half = rng.range(0.1f, 0.14f) * std::sqrt(height / 3.0f);
+  const float half = rng.range(0.15f, 0.2f) * std::sqrt(height / 3.0f);
   for (const StemNodes& s : all) {
-    const int cards = s.size() > 3 ? 10 : 9;
+    const int cards = s.size() > 3 ? 16 : 12;
     for (int k = 0; k < cards; ++k) {
       const Vec3f c = stem_point(s, rng.range(0.3f, 1.0f)) + 0.5f * half * random_direction(rng);
       const Vec3f facing = Vec3f(0, 0, 1.2f) + Vec3f(c.x(), c.y(), 0).normalized();

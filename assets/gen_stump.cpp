@@ -20,9 +20,9 @@ struct Flares {
     float e = 0;
     for (size_t i = 0; i < az.size(); ++i) {
       const float c = std::max(0.0f, std::cos(a - az[i]));
-      e += strength[i] * std::pow(c, 6.0f);
+      e += strength[i] * std::pow(c, 4.0f);
     }
-    return e * std::exp(-f / 0.12f);
+    return e * std::exp(-f / 0.18f);
   }
 };
 
@@ -48,12 +48,12 @@ std::vector<Vec3f> stump_surface(Rng& rng, const Flares& flares, float height, f
 GeneratedAsset generate_stump(Rng& rng) {
   constexpr float kPi = std::numbers::pi_v<float>;
   const float height = rng.range(0.3f, 0.9f);
-  const float r = rng.range(0.15f, 0.35f);
+  const float r = rng.range(0.15f, 0.32f);
   Flares flares;
   const int roots = 3 + int(rng.below(4));
   for (int i = 0; i < roots; ++i) {
     flares.az.push_back(2.0f * kPi * (float(i) + rng.range(-0.25f, 0.25f)) / float(roots));
-    flares.strength.push_back(rng.range(0.3f, 0.8f));
+    flares.strength.push_back(rng.range(0.5f, 1.1f));
   }
   const bool broken = rng.uniform() < 0.45f;
   const float tilt = broken ? 0.0f : rng.range(-0.15f, 0.15f);
@@ -61,7 +61,7 @@ GeneratedAsset generate_stump(Rng& rng) {
   MeshBuilder b;
   b.begin_part(Role::Stump, Material::LogBark);
   add_ring_grid(b, surface, kRings, kAround);
-  b.begin_part(Role::Stump, broken ? Material::BrokenWood : Material::Wood);
+  b.begin_part(Role::Stump, Material::BrokenWood);
   const std::span<const Vec3f> top(surface.data() + (kRings - 1) * kAround, kAround);
   const Vec3f up = Vec3f(-tilt, 0, 1).normalized();
   add_end_cap(b, rng, top, up, broken ? 0.2f / r * height * rng.range(0.5f, 1.0f) : 0.0f);

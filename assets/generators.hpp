@@ -21,8 +21,8 @@ GeneratedAsset generate_conifer(Rng& rng);
 GeneratedAsset generate_broadleaf(Rng& rng);
 /// Dead tree: 8-15 m (snapped: 4-12 m), bent trunk with bare branches (some with twigs), sometimes snapped.
 GeneratedAsset generate_dead_tree(Rng& rng);
-/// Stump: 0.3-0.9 m high, bark sides flaring into 3-6 buttress roots; a sawn (slightly tilted)
-/// or broken, splintered top.
+/// Stump: 0.3-0.9 m high, bark sides flaring into 3-6 buttress roots; a weathered sawn (slightly
+/// tilted) or broken, splintered top.
 GeneratedAsset generate_stump(Rng& rng);
 /// Short grass clump: 0.1-0.35 m, 6-10 curved cards of dense blade tufts.
 GeneratedAsset generate_grass(Rng& rng);
@@ -36,7 +36,7 @@ GeneratedAsset generate_bilberry(Rng& rng);
 /// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side
 /// branches and cards of broad round leaves.
 GeneratedAsset generate_hazel(Rng& rng);
-/// Bramble: 0.5-1.5 m, 4-9 arching canes (ribbons) bowing back to the ground, compound leaves.
+/// Bramble: 0.5-1.5 m, 6-12 arching canes (ribbons) bowing back to the ground, compound leaves.
 GeneratedAsset generate_bramble(Rng& rng);
 /// Rock: 0.3-1.5 m, icosphere displaced by fBm and ridged noise, cut by fracture planes,
 /// flattened and partly buried.

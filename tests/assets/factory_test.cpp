@@ -20,7 +20,7 @@ SizeRange expected_size(AssetKind k) {
     case AssetKind::ConiferTree: return {12.0f, 25.5f, 12.0f};
     case AssetKind::BroadleafTree: return {10.0f, 20.0f, 16.0f};
     case AssetKind::DeadTree: return {4.0f, 15.5f, 12.0f};
-    case AssetKind::Stump: return {0.3f, 0.95f, 1.6f};
+    case AssetKind::Stump: return {0.3f, 0.95f, 1.8f};
     case AssetKind::Grass: return {0.05f, 0.85f, 1.0f};
     case AssetKind::Fern: return {0.15f, 1.1f, 2.8f};
     case AssetKind::Shrub: return {0.15f, 5.5f, 6.0f};
