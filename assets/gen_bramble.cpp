@@ -28,9 +28,9 @@ GeneratedAsset generate_bramble(Rng& rng) {
   MeshBuilder b;
   add_stems(b, canes, Role::Shrub, Material::BarkConifer);
   b.begin_part(Role::Shrub, Material::ShrubLeaves, bramble_leaf_mask(), true);
-  const float leaf = rng.range(0.2f, 0.28f) * std::sqrt(height);
+  const float leaf = rng.range(0.24f, 0.32f) * std::sqrt(height);
   for (const StemNodes& c : canes) {
-    const int leaves = 14 + int(rng.below(8));
+    const int leaves = 18 + int(rng.below(10));
     for (int k = 0; k < leaves; ++k) {
       const float t = 0.15f + 0.85f * (float(k) + rng.uniform()) / float(leaves);
       const Vec3f at = stem_point(c, t), along = stem_point(c, t + 0.05f) - stem_point(c, t - 0.05f);

@@ -82,7 +82,7 @@ Vec3f leaf_litter_albedo(const SurfacePoint& s) {
   const Vec3f& p = s.position;
   const float tone = value_noise3(p.x() * 9.0f, p.y() * 9.0f, p.z() * 9.0f, kLitterTone);
   const float decay = value_noise3(p.x() * 30.0f, p.y() * 30.0f, p.z() * 30.0f, kLitterTone + 1);
-  const Vec3f c = lerp(Vec3f(0.14f, 0.07f, 0.03f), Vec3f(0.2f, 0.13f, 0.055f), tone);
+  const Vec3f c = lerp(Vec3f(0.085f, 0.045f, 0.02f), Vec3f(0.125f, 0.08f, 0.035f), tone);
   return lerp(c, Vec3f(0.07f, 0.05f, 0.03f), 0.6f * step(0.6f, 0.85f, decay));
 }
 

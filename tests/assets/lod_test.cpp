@@ -5,6 +5,7 @@
 #include "assets/alpha_masks.hpp"
 #include "assets/mesh_builder.hpp"
 #include "assets/strips.hpp"
+#include "assets/understory_masks.hpp"
 #include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
@@ -61,14 +62,14 @@ TEST(Lod, ChainIsStrictlyDecreasingAndStopsWhenNothingToRemove) {
   ASSERT_EQ(lods.size(), 4u);
   for (size_t k = 1; k < lods.size(); ++k) EXPECT_LT(lods[k].triangle_count(), lods[k - 1].triangle_count());
   MeshBuilder b;
-  b.begin_part(Role::GroundVegetation, Material::Grass, grass_blades_mask(), true);
+  b.begin_part(Role::GroundVegetation, Material::Grass, grass_tuft_mask(), true);
   add_card(b, Vec3f::Zero(), Vec3f::UnitX(), Vec3f::UnitZ());
   EXPECT_EQ(build_lods(b.finish()).size(), 1u);  // one card cannot be reduced
 }
 
 TEST(Lod, BentStripsAreThinnedWholeAndScaledAboutTheirBase) {
   MeshBuilder b;
-  b.begin_part(Role::GroundVegetation, Material::Fern, fern_frond_mask(), true);
+  b.begin_part(Role::GroundVegetation, Material::Fern, pinnate_frond_mask(), true);
   for (int s = 0; s < 4; ++s) {  // four 3-quad strips rising from x = 2 s
     const Vec3f base(float(2 * s), 0, 0);
     const StripNode spine[] = {{base, 0.1f}, {base + Vec3f(0, 0, 1), 0.1f}, {base + Vec3f(0, 0.5f, 2), 0.1f},
