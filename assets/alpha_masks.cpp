@@ -70,16 +70,6 @@ std::shared_ptr<const AlphaMask> leaf_cluster_mask() {
   return mask;
 }
 
-std::shared_ptr<const AlphaMask> shrub_leaves_mask() {
-  static const auto mask = [] {
-    auto s = radial_leaves(9, 0.30f, 0.08f, 0.0f);
-    const auto inner = radial_leaves(6, 0.18f, 0.07f, 30.0f);
-    s.insert(s.end(), inner.begin(), inner.end());
-    return rasterise(s);
-  }();
-  return mask;
-}
-
 std::shared_ptr<const AlphaMask> needle_spray_mask() {
   static const auto mask = [] {
     std::vector<Stroke> s = {{{0.5f, 1.0f}, {0.5f, 0.02f}, 0.025f, 0.01f}};
@@ -88,36 +78,6 @@ std::shared_ptr<const AlphaMask> needle_spray_mask() {
       const float len = 0.42f * (1.0f - 0.04f * float(i));
       for (float side : {-1.0f, 1.0f})
         s.push_back({{0.5f, y}, towards({0.5f, y}, side * 55.0f, len), 0.018f, 0.008f});
-    }
-    return rasterise(s);
-  }();
-  return mask;
-}
-
-std::shared_ptr<const AlphaMask> grass_blades_mask() {
-  static const auto mask = [] {
-    std::vector<Stroke> s;
-    const float base_x[] = {0.12f, 0.25f, 0.36f, 0.47f, 0.55f, 0.66f, 0.78f, 0.88f};
-    const float lean[] = {-14.0f, 6.0f, -5.0f, 2.0f, -3.0f, 9.0f, -6.0f, 15.0f};
-    const float height[] = {0.70f, 0.92f, 0.80f, 0.98f, 0.86f, 0.95f, 0.75f, 0.65f};
-    for (int i = 0; i < 8; ++i) {
-      const Vec2f a(base_x[i], 1.0f);
-      s.push_back({a, towards(a, lean[i], height[i]), 0.035f, 0.0f});
-    }
-    return rasterise(s);
-  }();
-  return mask;
-}
-
-std::shared_ptr<const AlphaMask> fern_frond_mask() {
-  static const auto mask = [] {
-    std::vector<Stroke> s = {{{0.5f, 1.0f}, {0.5f, 0.02f}, 0.02f, 0.008f}};
-    for (int i = 0; i < 14; ++i) {
-      const float f = (float(i) + 0.5f) / 14.0f;  // 0 at the base, 1 at the tip
-      const float y = 0.92f - 0.88f * f;
-      const float len = 0.46f * std::sin(std::numbers::pi_v<float> * (0.15f + 0.85f * f));
-      for (float side : {-1.0f, 1.0f})
-        s.push_back({{0.5f, y}, towards({0.5f, y}, side * 70.0f, len), 0.045f, 0, true});
     }
     return rasterise(s);
   }();

@@ -17,13 +17,5 @@ std::shared_ptr<const AlphaMask> leaf_cluster_mask();
 /// A conifer needle spray: a stem along v (base at v = 1) with needles angled towards the tip.
 std::shared_ptr<const AlphaMask> needle_spray_mask();
 
-/// Grass blades rising from the card's bottom edge (v = 1) and tapering to points.
-std::shared_ptr<const AlphaMask> grass_blades_mask();
-
-/// A fern frond: a rachis along v (base at v = 1) with paired leaflets, longest mid-frond.
-std::shared_ptr<const AlphaMask> fern_frond_mask();
-
-/// Small rounded shrub leaves scattered over the card.
-std::shared_ptr<const AlphaMask> shrub_leaves_mask();
 
 }  // namespace silva::assets

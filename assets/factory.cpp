@@ -12,12 +12,20 @@ constexpr Factory kFactories[] = {
     {AssetKind::ConiferTree, "conifer", 6, generate_conifer},
     {AssetKind::BroadleafTree, "broadleaf", 6, generate_broadleaf},
     {AssetKind::DeadTree, "dead_tree", 4, generate_dead_tree},
-    {AssetKind::Stump, "stump", 4, generate_stump},
-    {AssetKind::Grass, "grass", 6, generate_grass},
-    {AssetKind::Fern, "fern", 4, generate_fern},
-    {AssetKind::Shrub, "shrub", 5, generate_shrub},
-    {AssetKind::Rock, "rock", 6, generate_rock},
-    {AssetKind::Log, "log", 4, generate_log},
+    {AssetKind::Stump, "stump", 20, generate_stump},
+    {AssetKind::Grass, "grass", 20, generate_grass},
+    {AssetKind::Grass, "grass_tall", 20, generate_tall_grass},
+    {AssetKind::Fern, "fern", 20, generate_fern},
+    {AssetKind::Shrub, "bilberry", 20, generate_bilberry},
+    {AssetKind::Shrub, "hazel", 20, generate_hazel},
+    {AssetKind::Shrub, "bramble", 20, generate_bramble},
+    {AssetKind::Rock, "rock", 20, generate_rock},
+    {AssetKind::Log, "log", 20, generate_log},
+    {AssetKind::GroundCover, "twig", 20, generate_twig},
+    {AssetKind::GroundCover, "fallen_branch", 20, generate_fallen_branch},
+    {AssetKind::GroundCover, "cone", 20, generate_cone},
+    {AssetKind::GroundCover, "leaf_litter", 20, generate_leaf_litter},
+    {AssetKind::GroundCover, "moss", 20, generate_moss_cushion},
 };
 
 /// "<prefix>_<ii>".
@@ -26,6 +34,17 @@ std::string variant_name(const Factory& factory, uint32_t variant) {
   std::snprintf(name, sizeof name, "%s_%02u", factory.prefix, variant);
   return name;
 }
+
+/// True when the factories are in AssetKind order and every kind has at least one.
+constexpr bool covers_every_kind_in_order() {
+  size_t next = 0;
+  for (const Factory& f : kFactories) {
+    if (size_t(f.kind) == next) ++next;
+    else if (size_t(f.kind) + 1 != next) return false;
+  }
+  return next == size_t(AssetKind::Count);
+}
+static_assert(covers_every_kind_in_order(), "factories in kind order, every kind covered");
 
 }  // namespace
 

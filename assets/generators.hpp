@@ -21,18 +21,42 @@ GeneratedAsset generate_conifer(Rng& rng);
 GeneratedAsset generate_broadleaf(Rng& rng);
 /// Dead tree: 8-15 m (snapped: 4-12 m), bent trunk with bare branches (some with twigs), sometimes snapped.
 GeneratedAsset generate_dead_tree(Rng& rng);
-/// Stump: 0.3-0.9 m high, flared bark sides and a cut wood top.
+/// Stump: 0.3-0.9 m high, bark sides flaring into 3-6 buttress roots; a weathered sawn (slightly
+/// tilted) or broken, splintered top.
 GeneratedAsset generate_stump(Rng& rng);
-/// Grass clump: 0.3-0.6 m, crossed grass-blade cards.
+/// Short grass clump: 0.1-0.35 m, 6-10 curved cards of dense blade tufts.
 GeneratedAsset generate_grass(Rng& rng);
-/// Fern: 0.5-1 m, tilted frond cards around the centre.
+/// Tall grass clump: 0.35-0.8 m, curved tuft cards plus cards with seed-head stalks.
+GeneratedAsset generate_tall_grass(Rng& rng);
+/// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
+/// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);
-/// Shrub: 1-2 m, a few stems and blobs of leaf cards.
-GeneratedAsset generate_shrub(Rng& rng);
-/// Rock: 0.3-1.5 m, noise-displaced icosphere sunk a little into the ground.
+/// Bilberry: dense dwarf shrub 0.2-0.5 m, 14-27 green ribbon stems carrying small-leaf cards.
+GeneratedAsset generate_bilberry(Rng& rng);
+/// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side
+/// branches and cards of broad round leaves.
+GeneratedAsset generate_hazel(Rng& rng);
+/// Bramble: 0.5-1.5 m, 6-12 arching canes (ribbons) bowing back to the ground, compound leaves.
+GeneratedAsset generate_bramble(Rng& rng);
+/// Rock: 0.3-1.5 m, icosphere displaced by fBm and ridged noise, cut by fracture planes,
+/// flattened and partly buried.
 GeneratedAsset generate_rock(Rng& rng);
-/// Log: 3-6 m long, 0.3-0.6 m thick, lying along X with cut ends.
+/// Log: 3-6 m long, 0.3-0.6 m thick, lying along X, bumpy bark, branch stubs, ends mostly
+/// broken into splinters (else sawn).
 GeneratedAsset generate_log(Rng& rng);
+/// Twig on the ground: 0.15-0.4 m, thin ribbons with a few side twigs.
+GeneratedAsset generate_twig(Rng& rng);
+/// Small fallen branch: 0.28-0.42 m, 1.5-3 cm radius (a tube) with ribbon side twigs.
+GeneratedAsset generate_fallen_branch(Rng& rng);
+/// Conifer cone lying on the ground: spruce (8-15 cm, slim) or pine (4-7 cm, ovoid), scaly.
+GeneratedAsset generate_cone(Rng& rng);
+/// Leaf-litter cluster: 3-7 nearly flat, slightly curled cards of fallen leaves, <= 0.5 m.
+GeneratedAsset generate_leaf_litter(Rng& rng);
+/// Moss cushion: a lumpy flattened dome 0.1-0.3 m across, with up to two smaller ones beside it.
+GeneratedAsset generate_moss_cushion(Rng& rng);
+
+/// Quads along each fern frond.
+inline constexpr int kFrondSegments = 8;
 
 /// Vertical-cylinder proxy from the ground up: radius r, height h.
 CollisionProxy cylinder_proxy(float r, float h);

@@ -7,7 +7,7 @@ namespace silva::assets {
 
 namespace {
 constexpr const char* kKindNames[size_t(AssetKind::Count)] = {
-    "conifer_tree", "broadleaf_tree", "dead_tree", "stump", "grass", "fern", "shrub", "rock", "log"};
+    "conifer_tree", "broadleaf_tree", "dead_tree", "stump", "grass", "fern", "shrub", "rock", "log", "ground_cover"};
 }  // namespace
 
 AssetGeometry::AssetGeometry(std::vector<Mesh> lods) : lods_(std::move(lods)) { std::call_once(once_, [] {}); }

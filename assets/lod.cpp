@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <meshoptimizer.h>
 
@@ -32,25 +34,56 @@ std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, floa
   return out;
 }
 
-/// Keeps about `ratio` of a card part's quads (6 indices each, evenly spread) and scales each
-/// kept card about its centre by sqrt(1/ratio) (at most 2x) so the silhouette keeps its coverage.
+/// The distinct vertices of quad k (6 indices) of a card part, in index order of appearance.
+size_t quad_vertices(const Mesh& full, const MeshPart& part, size_t k, uint32_t (&verts)[4]) {
+  const uint32_t* q = full.indices.data() + part.first_index + 6 * k;
+  size_t nv = 0;
+  for (int i = 0; i < 6; ++i)
+    if (std::find(verts, verts + nv, q[i]) == verts + nv && nv < 4) verts[nv++] = q[i];
+  return nv;
+}
+
+/// Cards of a card part: runs of consecutive quads sharing vertices (a bent strip is one card),
+/// as [first quad, end quad) ranges.
+std::vector<std::pair<size_t, size_t>> card_runs(const Mesh& full, const MeshPart& part) {
+  std::vector<std::pair<size_t, size_t>> runs;
+  uint32_t prev[4] = {}, cur[4] = {};
+  size_t prev_n = 0;
+  for (size_t k = 0; k < part.index_count / 6; ++k) {
+    const size_t n = quad_vertices(full, part, k, cur);
+    const bool joined = std::any_of(cur, cur + n, [&](uint32_t v) { return std::find(prev, prev + prev_n, v) != prev + prev_n; });
+    if (joined) runs.back().second = k + 1;
+    else runs.emplace_back(k, k + 1);
+    std::copy(cur, cur + n, prev);
+    prev_n = n;
+  }
+  return runs;
+}
+
+/// Keeps about `ratio` of a card part's cards (evenly spread) and scales each kept card by
+/// sqrt(1/ratio) (at most 2x) so the silhouette keeps its coverage: a single quad about its
+/// centre, a strip about the middle of its base edge (its first two vertices).
 std::vector<uint32_t> thin_cards(const Mesh& full, const MeshPart& part, float ratio, std::vector<Vec3f>& positions) {
-  const size_t cards = part.index_count / 6;
+  const auto runs = card_runs(full, part);
+  const size_t cards = runs.size();
   const size_t keep = std::clamp<size_t>(size_t(std::lround(float(cards) * ratio)), 1, cards);
   const float scale = std::min(2.0f, std::sqrt(float(cards) / float(keep)));
   std::vector<uint32_t> out;
   for (size_t k = 0; k < cards; ++k) {
     if ((k + 1) * keep / cards == k * keep / cards) continue;
-    const uint32_t* q = full.indices.data() + part.first_index + 6 * k;
-    uint32_t verts[4];
-    size_t nv = 0;
-    for (int i = 0; i < 6; ++i)
-      if (std::find(verts, verts + nv, q[i]) == verts + nv && nv < 4) verts[nv++] = q[i];
+    const uint32_t* q = full.indices.data() + part.first_index + 6 * runs[k].first;
+    const size_t count = 6 * (runs[k].second - runs[k].first);
+    std::vector<uint32_t> verts(q, q + count);
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     Vec3f c = Vec3f::Zero();
-    for (size_t i = 0; i < nv; ++i) c += full.positions[verts[i]];
-    c /= float(nv);
-    for (size_t i = 0; i < nv; ++i) positions[verts[i]] = c + scale * (full.positions[verts[i]] - c);
-    out.insert(out.end(), q, q + 6);
+    if (verts.size() <= 4) {
+      for (uint32_t v : verts) c += full.positions[v] / float(verts.size());
+    } else {
+      c = 0.5f * (full.positions[verts[0]] + full.positions[verts[1]]);
+    }
+    for (uint32_t v : verts) positions[v] = c + scale * (full.positions[v] - c);
+    out.insert(out.end(), q, q + count);
   }
   return out;
 }

@@ -15,6 +15,7 @@ enum class AssetKind : uint8_t {
   Shrub,
   Rock,
   Log,
+  GroundCover,  ///< Small forest-floor debris (twigs, cones, litter, moss): labelled as ground.
   Count,
 };
 

@@ -7,7 +7,8 @@ namespace silva {
 namespace {
 constexpr const char* kNames[int(Material::Count)] = {
     "ground", "trail", "bark_conifer", "bark_broadleaf", "bark_dead", "needles",
-    "leaves", "grass", "fern", "shrub_leaves", "rock", "wood"};
+    "leaves", "grass", "fern", "shrub_leaves", "rock", "wood",
+    "log_bark", "broken_wood", "moss", "leaf_litter"};
 }  // namespace
 
 const char* material_name(Material m) { return kNames[int(m)]; }

@@ -18,6 +18,10 @@ enum class Material : uint8_t {
   ShrubLeaves,
   Rock,
   Wood,
+  LogBark,      ///< Bark of fallen wood and stumps: moss where it faces up.
+  BrokenWood,   ///< Pale splintered or weathered wood of broken ends.
+  Moss,         ///< Moss cushions.
+  LeafLitter,   ///< Fallen brown leaves.
   Count,
 };
 

@@ -27,6 +27,7 @@ constexpr std::array<std::array<float, 3>, size_t(Material::Count)> kBaseColor =
     {0.25f, 0.18f, 0.10f}, {0.45f, 0.40f, 0.30f}, {0.25f, 0.17f, 0.11f}, {0.35f, 0.30f, 0.25f},
     {0.50f, 0.48f, 0.45f}, {0.08f, 0.20f, 0.07f}, {0.15f, 0.35f, 0.08f}, {0.25f, 0.45f, 0.10f},
     {0.15f, 0.40f, 0.10f}, {0.18f, 0.32f, 0.10f}, {0.40f, 0.40f, 0.38f}, {0.45f, 0.32f, 0.20f},
+    {0.30f, 0.26f, 0.20f}, {0.55f, 0.45f, 0.32f}, {0.15f, 0.30f, 0.06f}, {0.35f, 0.22f, 0.10f},
 }};
 
 /// The binary chunk with its bufferViews and accessors.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/ground_object_materials.hpp"
 #include "render/shading_noise.hpp"
 #include "render/trail_material.hpp"
 
@@ -14,7 +15,6 @@ enum Salt : uint32_t {
   kBarkStreak = 0x600,
   kBarkLichen = 0x700,
   kFoliage = 0x800,
-  kRock = 0x900,
   kWood = 0xa00,
 };
 
@@ -61,23 +61,13 @@ Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
   return base.cwiseProduct(variation_tint(s.variation)) * (0.8f + 0.4f * mottle);
 }
 
-/// Grass: green with yellowed patches across the ground, lighter towards the blade tip (uv.y).
+/// Grass: green with yellowed patches across the ground, lighter towards the blade tip (v = 0).
 Vec3f grass(const SurfacePoint& s) {
   const Vec3f& p = s.position;
   const float dry = smoothstep(0.5f, 0.75f, fbm2(p.x() * 0.3f, p.y() * 0.3f, 2, kFoliage + 2));
   const Vec3f base = lerp(Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f), dry);
-  const float tip = std::clamp(s.uv.y(), 0.0f, 1.0f);
+  const float tip = 1.0f - std::clamp(s.uv.y(), 0.0f, 1.0f);
   return foliage(s, base) * (0.75f + 0.4f * tip);
-}
-
-/// Rock: grey with noise and moss on upward faces.
-Vec3f rock(const SurfacePoint& s) {
-  const Vec3f& p = s.position;
-  const float n = fbm3(p.x() * 3.0f, p.y() * 3.0f, p.z() * 3.0f, 3, kRock);
-  Vec3f c = Vec3f(0.3f, 0.29f, 0.27f) * (0.65f + 0.7f * n);
-  const float moss = smoothstep(0.55f, 0.85f, s.normal.z()) *
-                     smoothstep(0.4f, 0.6f, value_noise3(p.x() * 1.5f, p.y() * 1.5f, p.z() * 1.5f, kRock + 1));
-  return lerp(c, Vec3f(0.1f, 0.16f, 0.05f), moss);
 }
 
 /// Wood of logs and stumps: weathered bark-brown sides, pale cut faces on top with rings.
@@ -103,8 +93,12 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::Grass: return grass(s);
     case Material::Fern: return foliage(s, Vec3f(0.07f, 0.18f, 0.04f));
     case Material::ShrubLeaves: return foliage(s, Vec3f(0.07f, 0.14f, 0.045f));
-    case Material::Rock: return rock(s);
+    case Material::Rock: return rock_albedo(s);
     case Material::Wood: return wood(s);
+    case Material::LogBark: return log_bark_albedo(s);
+    case Material::BrokenWood: return broken_wood_albedo(s);
+    case Material::Moss: return moss_albedo(s);
+    case Material::LeafLitter: return leaf_litter_albedo(s);
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);

@@ -1,4 +1,5 @@
 #include "assets/alpha_masks.hpp"
+#include "assets/understory_masks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,8 +20,7 @@ double row_coverage(const AlphaMask& m, int y) {
 }
 
 TEST(AlphaMasks, AllAreBinarySquareAndPartlyOpaque) {
-  for (const auto& mask : {leaf_cluster_mask(), needle_spray_mask(), grass_blades_mask(), fern_frond_mask(),
-                           shrub_leaves_mask()}) {
+  for (const auto& mask : {leaf_cluster_mask(), needle_spray_mask()}) {
     ASSERT_EQ(mask->width, kMaskSize);
     ASSERT_EQ(mask->height, kMaskSize);
     ASSERT_EQ(mask->alpha.size(), size_t(kMaskSize * kMaskSize));
@@ -31,17 +31,27 @@ TEST(AlphaMasks, AllAreBinarySquareAndPartlyOpaque) {
   }
 }
 
+TEST(AlphaMasks, UnderstoryMasksAreBinaryAndPartlyOpaque) {
+  for (const auto& mask : {pinnate_frond_mask(), grass_tuft_mask(), grass_seed_mask(), bilberry_leaves_mask(),
+                           hazel_leaves_mask(), bramble_leaf_mask(), litter_leaves_mask()}) {
+    ASSERT_EQ(mask->alpha.size(), size_t(mask->width) * size_t(mask->height));
+    for (uint8_t a : mask->alpha) ASSERT_TRUE(a == 0 || a == 255);
+    EXPECT_GT(coverage(*mask), 0.08);
+    EXPECT_LT(coverage(*mask), 0.75);
+  }
+}
+
 TEST(AlphaMasks, SharedAcrossCalls) { EXPECT_EQ(leaf_cluster_mask(), leaf_cluster_mask()); }
 
 TEST(AlphaMasks, GrassGrowsFromTheBottomEdgeAndTapers) {
-  const AlphaMask& g = *grass_blades_mask();
-  EXPECT_GT(row_coverage(g, kMaskSize - 1), 3 * row_coverage(g, 4));
-  EXPECT_TRUE(g.opaque(0.47f, 0.99f));  // a blade base
-  EXPECT_FALSE(g.opaque(0.02f, 0.02f));  // top-left corner is empty
+  for (const auto& mask : {grass_tuft_mask(), grass_seed_mask()}) {
+    EXPECT_GT(row_coverage(*mask, mask->height - 1), 3 * row_coverage(*mask, 4));
+    EXPECT_FALSE(mask->opaque(0.02f, 0.02f));  // top-left corner is empty
+  }
 }
 
 TEST(AlphaMasks, FrondsAndSpraysHaveAStemAlongV) {
-  for (const auto& mask : {fern_frond_mask(), needle_spray_mask()}) {
+  for (const auto& mask : {pinnate_frond_mask(), needle_spray_mask()}) {
     for (float v : {0.3f, 0.6f, 0.95f}) EXPECT_TRUE(mask->opaque(0.5f, v)) << v;
     EXPECT_FALSE(mask->opaque(0.02f, 0.98f));
   }

@@ -20,12 +20,13 @@ SizeRange expected_size(AssetKind k) {
     case AssetKind::ConiferTree: return {12.0f, 25.5f, 12.0f};
     case AssetKind::BroadleafTree: return {10.0f, 20.0f, 16.0f};
     case AssetKind::DeadTree: return {4.0f, 15.5f, 12.0f};
-    case AssetKind::Stump: return {0.3f, 0.9f, 1.2f};
-    case AssetKind::Grass: return {0.25f, 0.6f, 0.6f};
-    case AssetKind::Fern: return {0.4f, 1.0f, 2.2f};
-    case AssetKind::Shrub: return {0.8f, 2.0f, 2.6f};
+    case AssetKind::Stump: return {0.3f, 0.95f, 1.8f};
+    case AssetKind::Grass: return {0.05f, 0.85f, 1.0f};
+    case AssetKind::Fern: return {0.15f, 1.1f, 2.8f};
+    case AssetKind::Shrub: return {0.15f, 5.5f, 6.0f};
     case AssetKind::Rock: return {0.05f, 1.5f, 1.5f};
-    case AssetKind::Log: return {0.2f, 0.7f, 6.0f};
+    case AssetKind::Log: return {0.2f, 0.9f, 6.3f};
+    case AssetKind::GroundCover: return {0.003f, 0.5f, 0.55f};
     default: return {0, 0, 0};
   }
 }
@@ -40,6 +41,7 @@ std::set<Role> allowed_roles(AssetKind k) {
     case AssetKind::Grass:
     case AssetKind::Fern: return {Role::GroundVegetation};
     case AssetKind::Shrub: return {Role::Shrub};
+    case AssetKind::GroundCover: return {Role::Ground};
     default: return {Role::Obstacle};
   }
 }
@@ -47,10 +49,23 @@ std::set<Role> allowed_roles(AssetKind k) {
 CollisionProxy::Shape expected_proxy(AssetKind k) {
   switch (k) {
     case AssetKind::Grass:
-    case AssetKind::Fern: return CollisionProxy::Shape::None;
+    case AssetKind::Fern:
+    case AssetKind::GroundCover: return CollisionProxy::Shape::None;
     case AssetKind::Log: return CollisionProxy::Shape::Capsule;
     case AssetKind::Rock: return CollisionProxy::Shape::Box;  // or Sphere, checked below
     default: return CollisionProxy::Shape::Cylinder;
+  }
+}
+
+/// Full-detail triangle budget of a kind.
+size_t triangle_budget(AssetKind k) {
+  switch (k) {
+    case AssetKind::Grass: return 64;
+    case AssetKind::GroundCover: return 500;
+    case AssetKind::Fern:
+    case AssetKind::Shrub:
+    case AssetKind::Rock: return 3000;
+    default: return 6000;
   }
 }
 
@@ -78,7 +93,7 @@ void check_asset(const Factory& f, const Asset& a) {
     }
   }
   const Mesh& m = a.lods()[0];
-  EXPECT_LE(m.triangle_count(), f.kind == AssetKind::Grass ? 50u : 6000u);
+  EXPECT_LE(m.triangle_count(), triangle_budget(f.kind));
   const std::set<Role> roles = allowed_roles(f.kind);
   for (const MeshPart& p : m.parts) EXPECT_TRUE(roles.count(p.role)) << role_name(p.role);
   EXPECT_TRUE(roles.count(a.role));
@@ -122,7 +137,7 @@ void check_asset(const Factory& f, const Asset& a) {
   }
 }
 
-TEST(Factory, OneFactoryPerKindWithSeveralVariants) {
+TEST(Factory, EveryKindHasAFactoryWithSeveralVariants) {
   std::set<AssetKind> kinds;
   for (const Factory& f : factories()) {
     kinds.insert(f.kind);
@@ -146,6 +161,25 @@ TEST(Factory, SameSeedSameBytesDifferentSeedDifferentMesh) {
     EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 6, 1).lods()[0]));
     EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 5, 2).lods()[0]));
   }
+}
+
+TEST(Factory, AllVariantsOfAFactoryDiffer) {
+  for (const Factory& f : factories()) {
+    SCOPED_TRACE(f.prefix);
+    std::vector<Mesh> meshes;
+    for (uint32_t v = 0; v < f.variants; ++v) meshes.push_back(make_asset(f, 9, v).lods()[0]);
+    for (size_t i = 0; i < meshes.size(); ++i)
+      for (size_t j = i + 1; j < meshes.size(); ++j) EXPECT_FALSE(same_bytes(meshes[i], meshes[j])) << i << " " << j;
+  }
+}
+
+TEST(Factory, FactoriesSharingAKindDrawDifferentShapes) {
+  const auto all = factories();
+  for (size_t i = 0; i + 1 < all.size(); ++i)
+    if (all[i].kind == all[i + 1].kind) {
+      EXPECT_STRNE(all[i].prefix, all[i + 1].prefix);
+      EXPECT_FALSE(same_bytes(make_asset(all[i], 4, 0).lods()[0], make_asset(all[i + 1], 4, 0).lods()[0]));
+    }
 }
 
 TEST(Factory, GenerateLibraryIndexesKindsAndNamesAreUnique) {

@@ -4,6 +4,8 @@
 
 #include "assets/alpha_masks.hpp"
 #include "assets/mesh_builder.hpp"
+#include "assets/strips.hpp"
+#include "assets/understory_masks.hpp"
 #include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
@@ -60,9 +62,28 @@ TEST(Lod, ChainIsStrictlyDecreasingAndStopsWhenNothingToRemove) {
   ASSERT_EQ(lods.size(), 4u);
   for (size_t k = 1; k < lods.size(); ++k) EXPECT_LT(lods[k].triangle_count(), lods[k - 1].triangle_count());
   MeshBuilder b;
-  b.begin_part(Role::GroundVegetation, Material::Grass, grass_blades_mask(), true);
+  b.begin_part(Role::GroundVegetation, Material::Grass, grass_tuft_mask(), true);
   add_card(b, Vec3f::Zero(), Vec3f::UnitX(), Vec3f::UnitZ());
   EXPECT_EQ(build_lods(b.finish()).size(), 1u);  // one card cannot be reduced
+}
+
+TEST(Lod, BentStripsAreThinnedWholeAndScaledAboutTheirBase) {
+  MeshBuilder b;
+  b.begin_part(Role::GroundVegetation, Material::Fern, pinnate_frond_mask(), true);
+  for (int s = 0; s < 4; ++s) {  // four 3-quad strips rising from x = 2 s
+    const Vec3f base(float(2 * s), 0, 0);
+    const StripNode spine[] = {{base, 0.1f}, {base + Vec3f(0, 0, 1), 0.1f}, {base + Vec3f(0, 0.5f, 2), 0.1f},
+                               {base + Vec3f(0, 1.5f, 2.5f), 0.1f}};
+    add_strip(b, spine, Vec3f::UnitX());
+  }
+  const Mesh full = b.finish();
+  const Mesh half = reduce_mesh(full, 0.5f);
+  ASSERT_EQ(half.parts[0].index_count, 2u * 3 * 6);  // two whole strips
+  // The kept strips' bases stay on the ground; their tips reach sqrt(2) further.
+  float lowest = 1e9f, highest = 0;
+  for (const Vec3f& p : half.positions) lowest = std::min(lowest, p.z()), highest = std::max(highest, p.z());
+  EXPECT_NEAR(lowest, 0.0f, 1e-6f);
+  EXPECT_NEAR(highest, 2.5f * std::sqrt(2.0f), 1e-4f);
 }
 
 }  // namespace

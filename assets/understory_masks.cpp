@@ -1,0 +1,160 @@
+#include "assets/understory_masks.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "assets/mask_strokes.hpp"
+
+namespace silva::assets {
+
+namespace {
+
+using Shape = Stroke::Shape;
+
+/// A blade from `base` bending by `bend` degrees over its length, as three tapering segments.
+void add_blade(std::vector<Stroke>& s, Vec2f base, float deg, float bend, float len, float half) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec2f next = stroke_towards(base, deg + bend * float(k) / 2.0f, len / 3.0f);
+    s.push_back({base, next, half * (1.0f - float(k) / 3.0f), half * (1.0f - float(k + 1) / 3.0f)});
+    base = next;
+  }
+}
+
+/// Deterministic pseudo-random value in [0, 1) for mask layouts (same every run).
+float jitter(int i, int salt) {
+  uint32_t h = uint32_t(i) * 0x9e3779b1u ^ uint32_t(salt) * 0x85ebca6bu;
+  h ^= h >> 15;
+  h *= 0x2c1b3c6du;
+  h ^= h >> 12;
+  return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+/// A tuft of `count` blades across the mask bottom (mask units, height `h`).
+void add_tuft(std::vector<Stroke>& s, int count, float h, float min_len, int salt) {
+  for (int i = 0; i < count; ++i) {
+    const float x = 0.1f + 0.8f * (float(i) + jitter(i, salt)) / float(count);
+    const float lean = (x - 0.5f) * 50.0f + 20.0f * (jitter(i, salt + 1) - 0.5f);
+    const float len = h * (min_len + (1.0f - min_len) * jitter(i, salt + 2));
+    add_blade(s, {x, h}, lean, lean > 0 ? 18.0f : -18.0f, len, 0.022f + 0.01f * jitter(i, salt + 3));
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<const AlphaMask> pinnate_frond_mask() {
+  static const auto mask = [] {
+    const float h = float(kFrondMaskHeight) / float(kFrondMaskWidth);
+    std::vector<Stroke> s = {{{0.5f, h}, {0.5f, 0.02f}, 0.022f, 0.008f}};
+    constexpr int kPairs = 18;
+    for (int i = 0; i < kPairs; ++i) {
+      const float f = (float(i) + 0.5f) / float(kPairs);  // 0 at the lowest pinna, 1 at the tip
+      const Vec2f on(0.5f, h * (0.86f - 0.84f * f));
+      const float len = 0.47f * std::pow(std::sin(std::numbers::pi_v<float> * (0.12f + 0.88f * f)), 0.8f);
+      const float half = 0.05f + 0.03f * len;
+      for (float side : {-1.0f, 1.0f}) {
+        const float deg = side * (65.0f - 15.0f * f);
+        const Vec2f tip = stroke_towards(on, deg, len);
+        s.push_back({on, tip, half, 0, Shape::Pointed});
+        for (int k = 1; k <= 4; ++k) {  // pinnules: lobes along both edges of the pinna
+          const Vec2f p = on + (0.2f * float(k)) * (tip - on);
+          for (float edge : {-1.0f, 1.0f})
+            s.push_back({p, stroke_towards(p, deg + edge * 50.0f, 0.9f * half), 0.45f * half, 0, Shape::Pointed});
+        }
+      }
+    }
+    return rasterise_strokes(s, kFrondMaskWidth, kFrondMaskHeight);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> grass_tuft_mask() {
+  static const auto mask = [] {
+    std::vector<Stroke> s;
+    add_tuft(s, 16, 2.0f, 0.35f, 1);
+    return rasterise_strokes(s, 64, 128);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> grass_seed_mask() {
+  static const auto mask = [] {
+    std::vector<Stroke> s;
+    add_tuft(s, 10, 2.0f, 0.25f, 7);
+    for (int i = 0; i < 3; ++i) {  // flowering stalks ending in a spike-like seed head
+      const Vec2f base(0.3f + 0.2f * float(i), 2.0f);
+      const float lean = -12.0f + 12.0f * float(i);
+      const Vec2f top = stroke_towards(base, lean, 1.45f + 0.15f * jitter(i, 9));
+      s.push_back({base, top, 0.012f, 0.009f});
+      s.push_back({top, stroke_towards(top, lean + 6.0f, 0.42f), 0.045f, 0, Shape::Pointed});
+      for (int k = 0; k < 4; ++k) {  // loose spikelets along the head
+        const Vec2f p = stroke_towards(top, lean, 0.08f + 0.08f * float(k));
+        const float side = k % 2 ? 1.0f : -1.0f;
+        s.push_back({p, stroke_towards(p, lean + side * 35.0f, 0.09f), 0.022f, 0, Shape::Pointed});
+      }
+    }
+    return rasterise_strokes(s, 64, 128);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> bilberry_leaves_mask() {
+  static const auto mask = [] {
+    std::vector<Stroke> s;
+    const float twig_deg[] = {-35.0f, 0.0f, 30.0f, 60.0f};
+    for (int t = 0; t < 4; ++t) {
+      const Vec2f base(0.25f + 0.15f * float(t), 1.0f);
+      const Vec2f top = stroke_towards(base, twig_deg[t] - 15.0f, 0.85f);
+      s.push_back({base, top, 0.012f, 0.008f});
+      for (int k = 0; k < 6; ++k) {  // alternate small oval leaves
+        const Vec2f on = base + (0.22f + 0.13f * float(k)) * (top - base);
+        const float side = k % 2 ? 1.0f : -1.0f;
+        add_leaf_strokes(s, on, twig_deg[t] - 15.0f + side * 55.0f, 0.13f, 0.045f, 0);
+      }
+    }
+    return rasterise_strokes(s, 64, 64);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> hazel_leaves_mask() {
+  static const auto mask = [] {
+    std::vector<Stroke> s;
+    const Vec2f c(0.5f, 0.55f);
+    const float deg[] = {-70.0f, 5.0f, 75.0f};
+    const float len[] = {0.38f, 0.45f, 0.36f};
+    for (int i = 0; i < 3; ++i) {
+      const Vec2f base = stroke_towards(c, deg[i], 0.05f);
+      s.push_back({c, base, 0.012f, 0.01f});
+      add_leaf_strokes(s, base, deg[i], len[i], 0.42f * len[i], 5);
+    }
+    return rasterise_strokes(s, 64, 64);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> bramble_leaf_mask() {
+  static const auto mask = [] {
+    const Vec2f base(0.5f, 1.0f), hub(0.5f, 0.62f);
+    std::vector<Stroke> s = {{base, hub, 0.014f, 0.012f}};
+    const float deg[] = {-100.0f, -50.0f, 0.0f, 50.0f, 100.0f};
+    const float len[] = {0.2f, 0.3f, 0.4f, 0.3f, 0.2f};
+    for (int i = 0; i < 5; ++i) add_leaf_strokes(s, stroke_towards(hub, deg[i], 0.03f), deg[i], len[i], 0.38f * len[i], 4);
+    return rasterise_strokes(s, 64, 64);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> litter_leaves_mask() {
+  static const auto mask = [] {
+    std::vector<Stroke> s;
+    for (int i = 0; i < 6; ++i) {
+      const Vec2f base(0.2f + 0.6f * jitter(i, 21), 0.25f + 0.6f * jitter(i, 22));
+      const float len = 0.2f + 0.12f * jitter(i, 23);
+      add_leaf_strokes(s, base, 360.0f * jitter(i, 24), len, (i % 3 ? 0.3f : 0.4f) * len, i % 3 ? 0 : 3);
+    }
+    return rasterise_strokes(s, 64, 64);
+  }();
+  return mask;
+}
+
+}  // namespace silva::assets
