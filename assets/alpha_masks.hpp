@@ -26,4 +26,22 @@ std::shared_ptr<const AlphaMask> fern_frond_mask();
 /// Small rounded shrub leaves scattered over the card.
 std::shared_ptr<const AlphaMask> shrub_leaves_mask();
 
+/// Scots pine: a twig tip (base at v = 1) with a brush of long needles fanning towards v = 0.
+std::shared_ptr<const AlphaMask> pine_tuft_mask();
+
+/// Larch: a twig along v with short needle tufts on either side.
+std::shared_ptr<const AlphaMask> larch_tuft_mask();
+
+/// Beech: a twig along v with alternate broad oval leaves.
+std::shared_ptr<const AlphaMask> beech_leaves_mask();
+
+/// Silver birch: a thin twig along v with small, sparse pointed leaves.
+std::shared_ptr<const AlphaMask> birch_leaves_mask();
+
+/// Oak: a twig along v with lobed leaves.
+std::shared_ptr<const AlphaMask> oak_leaves_mask();
+
+/// Dead twigs: a bare stem along v with forking side twigs.
+std::shared_ptr<const AlphaMask> bare_twig_mask();
+
 }  // namespace silva::assets

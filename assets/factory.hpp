@@ -1,6 +1,7 @@
 #pragma once
 /// @file The built-in asset factories (Infinigen habit): each variant i of a factory is seeded by
-/// hash(seed, kind, i), so a variant never depends on which other variants were generated.
+/// hash(seed, kind, prefix, i), so a variant never depends on which other variants were
+/// generated, and factories sharing a kind (several tree species) draw independent streams.
 #include <cstdint>
 #include <span>
 
@@ -20,10 +21,10 @@ struct Factory {
   GeneratedAsset (*generate)(Rng&);   ///< The generator.
 };
 
-/// Every built-in factory, in library order (AssetKind order).
+/// Every built-in factory, in library order (AssetKind order; several may share a kind).
 std::span<const Factory> factories();
 
-/// Runs `factory` for `variant` (RNG keyed by the kind and variant, Purpose::AssetShape) and
+/// Runs `factory` for `variant` (RNG keyed by the kind, prefix and variant, Purpose::AssetShape) and
 /// builds the LODs and thresholds; the asset's file is "<name>.glb".
 Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant);
 

@@ -7,7 +7,9 @@ namespace silva {
 namespace {
 constexpr const char* kNames[int(Material::Count)] = {
     "ground", "trail", "bark_conifer", "bark_broadleaf", "bark_dead", "needles",
-    "leaves", "grass", "fern", "shrub_leaves", "rock", "wood"};
+    "leaves", "grass", "fern", "shrub_leaves", "rock", "wood",
+    "bark_spruce", "bark_pine", "bark_larch", "bark_beech", "bark_birch", "bark_oak",
+    "needles_spruce", "needles_pine", "needles_larch", "leaves_beech", "leaves_birch", "leaves_oak"};
 }  // namespace
 
 const char* material_name(Material m) { return kNames[int(m)]; }

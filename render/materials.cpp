@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/bark_materials.hpp"
 #include "render/shading_noise.hpp"
 
 namespace silva::render {
@@ -123,6 +124,18 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::ShrubLeaves: return foliage(s, Vec3f(0.07f, 0.14f, 0.045f));
     case Material::Rock: return rock(s);
     case Material::Wood: return wood(s);
+    case Material::BarkSpruce:
+    case Material::BarkPine:
+    case Material::BarkLarch:
+    case Material::BarkBeech:
+    case Material::BarkBirch:
+    case Material::BarkOak: return species_bark_albedo(s);
+    case Material::NeedlesSpruce: return foliage(s, Vec3f(0.03f, 0.075f, 0.035f));
+    case Material::NeedlesPine: return foliage(s, Vec3f(0.06f, 0.1f, 0.05f));
+    case Material::NeedlesLarch: return foliage(s, Vec3f(0.11f, 0.2f, 0.05f));
+    case Material::LeavesBeech: return foliage(s, Vec3f(0.08f, 0.18f, 0.035f));
+    case Material::LeavesBirch: return foliage(s, Vec3f(0.13f, 0.22f, 0.045f));
+    case Material::LeavesOak: return foliage(s, Vec3f(0.06f, 0.14f, 0.03f));
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);
@@ -134,7 +147,13 @@ float material_translucency(Material m) {
     case Material::Leaves:
     case Material::Grass:
     case Material::Fern:
-    case Material::ShrubLeaves: return 1.0f;
+    case Material::ShrubLeaves:
+    case Material::NeedlesSpruce:
+    case Material::NeedlesPine:
+    case Material::NeedlesLarch:
+    case Material::LeavesBeech:
+    case Material::LeavesBirch:
+    case Material::LeavesOak: return 1.0f;
     default: return 0.0f;
   }
 }

@@ -74,8 +74,8 @@ TEST_F(ManifestTest, RoundTripsEveryGeneratedEntryExactly) {
     EXPECT_EQ(a.proxy.half_extents, b.proxy.half_extents);
     EXPECT_EQ(a.proxy.axis, b.proxy.axis);
   }
-  EXPECT_EQ(back[0].parts.at("needles"), Role::TreeCanopy);
-  EXPECT_EQ(back[0].parts.at("bark_conifer"), Role::TreeTrunk);
+  EXPECT_EQ(back[0].parts.at("needles_spruce"), Role::TreeCanopy);
+  EXPECT_EQ(back[0].parts.at("bark_spruce"), Role::TreeTrunk);
 }
 
 TEST_F(ManifestTest, ReadsAHandWrittenEntry) {
