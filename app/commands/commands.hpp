@@ -49,6 +49,16 @@ struct AssetsBuildRequest {
   std::filesystem::path out_dir;  ///< --out DIR ("" = the library folder the pipeline uses by default).
 };
 
+/// `silva assets sheet`: a contact sheet of built-in asset variants.
+struct AssetsSheetRequest {
+  std::string kind;               ///< Kind name or factory prefix (checked by the CLI).
+  int count = 6;                  ///< Variants per factory (1..64).
+  int cell = 320;                 ///< Side of one view in pixels (64..2048).
+  int columns = 3;                ///< Variants per row (1..16).
+  uint64_t seed = 0;              ///< Asset seed.
+  std::filesystem::path out;      ///< PNG file to write.
+};
+
 /// `silva merge DIR`: check shards cover every frame, then write manifest.json.
 struct MergeRequest {
   std::filesystem::path run_dir;  ///< <output.dir>/<seed>/, an existing folder.
@@ -78,6 +88,8 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter);
 int run_world(const WorldRequest& request, const Reporter& reporter);
 /// Builds the asset library; returns the exit code. Throws InputError / IoError.
 int run_assets_build(const AssetsBuildRequest& request, const Reporter& reporter);
+/// Renders and writes an asset contact sheet; returns the exit code. Throws IoError.
+int run_assets_sheet(const AssetsSheetRequest& request, const Reporter& reporter);
 /// Merges shards of a run; returns the exit code. Throws InputError / IoError.
 int run_merge(const MergeRequest& request, const Reporter& reporter);
 /// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
