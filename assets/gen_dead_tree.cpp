@@ -14,7 +14,7 @@ TreeLook dead_look(bool twigs) {
   TreeLook look{Material::BarkDead, Role::DeadTree, twigs, {}};
   look.cards = {.mask = bare_twig_mask(), .material = Material::BarkDead, .role = Role::DeadTree,
                 .style = CardStyle::Spray, .half = 0.3f, .spacing = 0.4f, .start = 0.2f, .droop = 0.1f,
-                .level = 2, .max_cards = 600};
+                .level = 2, .max_cards = 800};
   return look;
 }
 
@@ -27,7 +27,7 @@ GeneratedAsset generate_dead_tree(Rng& rng) {
   const float top = snapped ? rng.range(0.35f, 0.8f) : 1.0f;
   const Skeleton s = dead_skeleton(length, r0, top, rng);
   MeshBuilder b;
-  mesh_tree(b, s, dead_look(rng.uniform() < 0.5f), rng);
+  mesh_tree(b, s, dead_look(rng.uniform() < 0.7f), rng);
   if (snapped) {
     const auto& trunk = s.branches.front().nodes;
     const TubeNode tip = trunk.back();

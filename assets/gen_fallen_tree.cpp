@@ -60,9 +60,9 @@ void add_root_plate(MeshBuilder& b, Rng& rng, float x0, float R, float r0) {
 }  // namespace
 
 GeneratedAsset generate_fallen_tree(Rng& rng) {
-  const float length = rng.range(6.0f, 12.0f);
+  const float length = rng.range(8.0f, 16.0f);
   const float r0 = rng.range(0.12f, 0.22f);
-  const float top = rng.uniform() < 0.7f ? rng.range(0.6f, 0.9f) : 1.0f;
+  const float top = rng.range(0.45f, 0.85f);  // broken where the trunk hit the ground
   const Skeleton s = lay_down(dead_skeleton(length, r0, top, rng), -0.5f * length * top);
   MeshBuilder b;
   TreeLook look{Material::BarkDead, Role::Obstacle, false, {}};

@@ -37,10 +37,9 @@ std::vector<TubeNode> tube_nodes(const Branch& br) {
 }
 
 /// Fraction along a branch from which it carries cards: [start, 1] for foliage levels, else
-/// its non-tube tail (radius below kMinTubeRadius), or nothing (returns > 1).
+/// its non-tube tail (radius below kMinTubeRadius; the trunk's leader), or nothing (returns > 1).
 float card_from(const Branch& br, const FoliageParams& f) {
   if (br.level >= f.level) return f.start;
-  if (br.level == 0) return 2.0f;
   const float r0 = br.nodes.front().r, r1 = br.nodes.back().r;
   if (r1 >= kMinTubeRadius) return 2.0f;
   return r0 <= kMinTubeRadius ? 0.0f : (r0 - kMinTubeRadius) / (r0 - r1);
@@ -100,15 +99,20 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
   for (const Branch& br : s.branches)
     for (const TubeNode& n : br.nodes) height = std::max(height, n.p.z());
   b.begin_part(look.bark_role, look.bark);
+  int tube_triangles = 0;
   for (const Branch& br : s.branches) {
     const std::vector<TubeNode> tube = tube_nodes(br);
-    if (tube.size() >= 2) add_tube(b, tube, tube_sides(tube.front().r), height);
+    if (tube.size() < 2) continue;
+    add_tube(b, tube, tube_sides(tube.front().r), height);
+    tube_triangles += 2 * tube_sides(tube.front().r) * int(tube.size() - 1);
   }
   if (!look.foliage) return;
   const FoliageParams& f = look.cards;
   float total = 0;
   for (const Branch& br : s.branches) total += std::max(0.0f, 1.0f - card_from(br, f)) * br.length;
-  const float spacing = std::max(f.spacing, total / float(f.max_cards));
+  // Card counts per branch are rounded stochastically (unbiased): 100 cards of slack cover that.
+  const int budget = std::min(f.max_cards, (kTreeTriangleBudget - tube_triangles) / 2 - 100);
+  const float spacing = std::max(f.spacing, total / float(std::max(1, budget)));
   b.begin_part(f.role, f.material, f.mask, true);
   for (const Branch& br : s.branches) {
     const float from = card_from(br, f);

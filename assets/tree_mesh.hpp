@@ -12,6 +12,9 @@ namespace silva::assets {
 /// Thinner branch parts than this radius (m) are drawn by cards, never as tubes (thin tubes alias).
 inline constexpr float kMinTubeRadius = 0.015f;
 
+/// Most triangles of one tree's full-detail mesh: cards are thinned to stay within it.
+inline constexpr int kTreeTriangleBudget = 9000;
+
 /// How cards sit on a twig.
 enum class CardStyle : uint8_t {
   Spray,    ///< Card base on the twig, pointing along it (needle sprays, leafy shoots).
@@ -41,7 +44,8 @@ struct TreeLook {
 };
 
 /// Adds the bark part (tubes, trunk flared at the ground) and the card part of `s` to `b`;
-/// cards whose centre would lie inside the trunk are left out.
+/// cards whose centre would lie inside the trunk are left out, and the card spacing grows so that
+/// tubes and cards together stay within kTreeTriangleBudget.
 void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng);
 
 /// The tree's collision proxy: a vertical cylinder of the trunk radius at breast height
