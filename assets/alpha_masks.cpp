@@ -80,16 +80,6 @@ std::vector<Stroke> leafy_twig(int count, float len, float width, float deg, int
 
 }  // namespace
 
-std::shared_ptr<const AlphaMask> leaf_cluster_mask() {
-  static const auto mask = [] {
-    auto s = radial_leaves(7, 0.40f, 0.09f, 10.0f);
-    const auto inner = radial_leaves(5, 0.25f, 0.07f, 40.0f);
-    s.insert(s.end(), inner.begin(), inner.end());
-    return rasterise(s);
-  }();
-  return mask;
-}
-
 std::shared_ptr<const AlphaMask> shrub_leaves_mask() {
   static const auto mask = [] {
     auto s = radial_leaves(9, 0.30f, 0.08f, 0.0f);

@@ -11,9 +11,6 @@ namespace silva::assets {
 /// Side length of every procedural mask, in texels.
 inline constexpr int kMaskSize = 64;
 
-/// A cluster of pointed broadleaf leaves around the card centre.
-std::shared_ptr<const AlphaMask> leaf_cluster_mask();
-
 /// A conifer needle spray: a stem along v (base at v = 1) with needles angled towards the tip.
 std::shared_ptr<const AlphaMask> needle_spray_mask();
 

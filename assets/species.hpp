@@ -10,8 +10,8 @@ namespace silva::assets {
 /// One species: mature size, branching per level, bark and foliage.
 struct Species {
   const char* name;            ///< Species name, e.g. "norway_spruce".
-  float mature_min;            ///< Mature height range (m).
-  float mature_max;            ///< Mature height range (m).
+  float mature_min;            ///< Lowest mature height (m).
+  float mature_max;            ///< Highest mature height (m).
   float trunk_share;           ///< Trunk length / tree height (broadleaf trunks end inside the crown).
   float slenderness;           ///< Trunk base radius / trunk length.
   SkeletonParams skeleton;     ///< Branching of a mature tree (height and radius set per tree).

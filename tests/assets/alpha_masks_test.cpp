@@ -19,8 +19,9 @@ double row_coverage(const AlphaMask& m, int y) {
 }
 
 TEST(AlphaMasks, AllAreBinarySquareAndPartlyOpaque) {
-  for (const auto& mask : {leaf_cluster_mask(), needle_spray_mask(), grass_blades_mask(), fern_frond_mask(),
-                           shrub_leaves_mask()}) {
+  for (const auto& mask : {needle_spray_mask(), grass_blades_mask(), fern_frond_mask(), shrub_leaves_mask(),
+                           pine_tuft_mask(), larch_tuft_mask(), beech_leaves_mask(), birch_leaves_mask(),
+                           oak_leaves_mask(), bare_twig_mask()}) {
     ASSERT_EQ(mask->width, kMaskSize);
     ASSERT_EQ(mask->height, kMaskSize);
     ASSERT_EQ(mask->alpha.size(), size_t(kMaskSize * kMaskSize));
@@ -31,7 +32,7 @@ TEST(AlphaMasks, AllAreBinarySquareAndPartlyOpaque) {
   }
 }
 
-TEST(AlphaMasks, SharedAcrossCalls) { EXPECT_EQ(leaf_cluster_mask(), leaf_cluster_mask()); }
+TEST(AlphaMasks, SharedAcrossCalls) { EXPECT_EQ(beech_leaves_mask(), beech_leaves_mask()); }
 
 TEST(AlphaMasks, GrassGrowsFromTheBottomEdgeAndTapers) {
   const AlphaMask& g = *grass_blades_mask();
@@ -41,7 +42,8 @@ TEST(AlphaMasks, GrassGrowsFromTheBottomEdgeAndTapers) {
 }
 
 TEST(AlphaMasks, FrondsAndSpraysHaveAStemAlongV) {
-  for (const auto& mask : {fern_frond_mask(), needle_spray_mask()}) {
+  for (const auto& mask : {fern_frond_mask(), needle_spray_mask(), larch_tuft_mask(), beech_leaves_mask(),
+                           birch_leaves_mask(), oak_leaves_mask()}) {
     for (float v : {0.3f, 0.6f, 0.95f}) EXPECT_TRUE(mask->opaque(0.5f, v)) << v;
     EXPECT_FALSE(mask->opaque(0.02f, 0.98f));
   }
