@@ -19,7 +19,7 @@ GeneratedAsset grow_tree(const Species& sp, Rng& rng) {
   TreeLook look = sp.look;
   if (height < 4.0f && p.levels.size() > 3) p.levels.pop_back();  // saplings: no finest order
   look.cards.level = std::min(look.cards.level, int(p.levels.size()) - 1);
-  const float card_scale = std::clamp(std::sqrt(scale), 0.35f, 1.0f);
+  const float card_scale = std::clamp(std::sqrt(scale), 0.25f, 1.0f);
   look.cards.half *= card_scale;
   look.cards.spacing *= card_scale;
   const Skeleton s = grow_skeleton(p, rng);

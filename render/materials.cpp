@@ -130,7 +130,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BarkBeech:
     case Material::BarkBirch:
     case Material::BarkOak: return species_bark_albedo(s);
-    case Material::NeedlesSpruce: return foliage(s, Vec3f(0.03f, 0.075f, 0.035f));
+    case Material::NeedlesSpruce: return foliage(s, Vec3f(0.025f, 0.06f, 0.03f));
     case Material::NeedlesPine: return foliage(s, Vec3f(0.06f, 0.1f, 0.05f));
     case Material::NeedlesLarch: return foliage(s, Vec3f(0.11f, 0.2f, 0.05f));
     case Material::LeavesBeech: return foliage(s, Vec3f(0.08f, 0.18f, 0.035f));
