@@ -1,6 +1,7 @@
 #include "assets/factory.hpp"
 
 #include <cstdio>
+#include <memory>
 
 #include "assets/lod.hpp"
 
@@ -24,30 +25,55 @@ constexpr Factory kFactories[] = {
     {AssetKind::Log, "fallen_tree", 4, generate_fallen_tree},
 };
 
-/// FNV-1a of a factory prefix: separates the streams of factories sharing a kind.
-constexpr uint64_t prefix_hash(const char* s) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (; *s; ++s) h = (h ^ uint8_t(*s)) * 0x100000001b3ull;
-  return h;
+/// "<prefix>_<ii>".
+std::string variant_name(const Factory& factory, uint32_t variant) {
+  char name[96];
+  std::snprintf(name, sizeof name, "%s_%02u", factory.prefix, variant);
+  return name;
 }
+
 }  // namespace
 
 std::span<const Factory> factories() { return kFactories; }
 
+const Factory* find_factory(const std::string& prefix) {
+  for (const Factory& f : kFactories)
+    if (prefix == f.prefix) return &f;
+  return nullptr;
+}
+
+GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant) {
+  uint64_t key = 0;
+  for (const char* c = factory.prefix; *c; ++c) key = hash_combine(key, uint64_t(uint8_t(*c)));
+  Rng rng(seed, hash_combine(key, variant), Purpose::AssetShape);
+  return factory.generate(rng);
+}
+
 Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant) {
-  const uint64_t stream = hash_combine(uint64_t(factory.kind), prefix_hash(factory.prefix));
-  Rng rng(seed, hash_combine(stream, variant), Purpose::AssetShape);
-  GeneratedAsset g = factory.generate(rng);
-  char name[64];
-  std::snprintf(name, sizeof name, "%s_%02u", factory.prefix, variant);
+  GeneratedAsset g = generate_variant(factory, seed, variant);
   Asset a;
-  a.name = name;
-  a.file = a.name + ".glb";
+  a.name = variant_name(factory, variant);
+  a.source = ProceduralSource{factory.prefix, variant, seed};
   a.kind = factory.kind;
   a.role = g.role;
-  a.lods = build_lods(g.mesh);
-  a.lod_screen_sizes.assign(std::begin(kLodScreenSizes), std::begin(kLodScreenSizes) + (a.lods.size() - 1));
+  auto geometry = std::make_shared<const AssetGeometry>(build_lods(g.mesh));
+  a.lod_screen_sizes.assign(std::begin(kLodScreenSizes), std::begin(kLodScreenSizes) + (geometry->lods().size() - 1));
+  a.geometry = std::move(geometry);
   a.proxy = g.proxy;
+  return a;
+}
+
+Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role role, const CollisionProxy& proxy,
+                 std::vector<float> lod_screen_sizes) {
+  Asset a;
+  a.name = variant_name(factory, variant);
+  a.source = ProceduralSource{factory.prefix, variant, seed};
+  a.kind = factory.kind;
+  a.role = role;
+  a.geometry = std::make_shared<const AssetGeometry>(
+      [&factory, seed, variant] { return build_lods(generate_variant(factory, seed, variant).mesh); });
+  a.lod_screen_sizes = std::move(lod_screen_sizes);
+  a.proxy = proxy;
   return a;
 }
 

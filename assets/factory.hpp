@@ -1,9 +1,11 @@
 #pragma once
 /// @file The built-in asset factories (Infinigen habit): each variant i of a factory is seeded by
-/// hash(seed, kind, prefix, i), so a variant never depends on which other variants were
-/// generated, and factories sharing a kind (several tree species) draw independent streams.
+/// hash(seed, prefix, i), so a variant never depends on which other variants were generated,
+/// and factories sharing a kind (several tree species) draw independent streams.
 #include <cstdint>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "assets/generators.hpp"
 #include "assets/library.hpp"
@@ -24,9 +26,19 @@ struct Factory {
 /// Every built-in factory, in library order (AssetKind order; several may share a kind).
 std::span<const Factory> factories();
 
-/// Runs `factory` for `variant` (RNG keyed by the kind, prefix and variant, Purpose::AssetShape) and
-/// builds the LODs and thresholds; the asset's file is "<name>.glb".
+/// The factory whose prefix is `prefix`, or null.
+const Factory* find_factory(const std::string& prefix);
+
+/// Runs `factory` for `variant`: RNG keyed by the prefix and variant (Purpose::AssetShape).
+GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant);
+
+/// Runs `factory` for `variant` and builds the LODs and thresholds now; no file.
 Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant);
+
+/// Variant `variant` of `factory` with the given metadata (from library.json); its meshes are
+/// generated and their LODs built when first used.
+Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role role, const CollisionProxy& proxy,
+                 std::vector<float> lod_screen_sizes);
 
 /// The whole built-in library (every factory, every variant), kinds indexed.
 AssetLibrary generate_library(uint64_t seed = kDefaultAssetSeed);

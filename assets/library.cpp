@@ -10,6 +10,15 @@ constexpr const char* kKindNames[size_t(AssetKind::Count)] = {
     "conifer_tree", "broadleaf_tree", "dead_tree", "stump", "grass", "fern", "shrub", "rock", "log"};
 }  // namespace
 
+AssetGeometry::AssetGeometry(std::vector<Mesh> lods) : lods_(std::move(lods)) { std::call_once(once_, [] {}); }
+
+AssetGeometry::AssetGeometry(Make make) : make_(std::move(make)) {}
+
+const std::vector<Mesh>& AssetGeometry::lods() const {
+  std::call_once(once_, [this] { lods_ = make_(); });
+  return lods_;
+}
+
 float CollisionProxy::footprint_radius() const {
   const float cxy = std::hypot(center.x(), center.y());
   switch (shape) {

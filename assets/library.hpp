@@ -2,7 +2,10 @@
 /// @file The asset library: every placeable mesh variant with its LODs, classes and collision proxy.
 /// Built by `silva assets build` (procedural generators -> .glb + library.json) and loaded
 /// through assimp by assets::load_library, so users can add or replace assets.
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,15 +30,45 @@ struct CollisionProxy {
   float footprint_radius() const;
 };
 
-/// One asset variant: its LOD meshes (lods[0] full detail) and metadata.
+/// An asset's LOD meshes (lods[0] full detail), either given when loaded or made on first use
+/// by a procedural generator; thread-safe, and the same whichever thread makes them.
+class AssetGeometry {
+ public:
+  /// Makes the LOD meshes; called at most once.
+  using Make = std::function<std::vector<Mesh>()>;
+  /// Geometry that is ready now.
+  explicit AssetGeometry(std::vector<Mesh> lods);
+  /// Geometry that `make` produces on first use.
+  explicit AssetGeometry(Make make);
+  /// The LOD meshes (made now when this is the first use).
+  const std::vector<Mesh>& lods() const;
+
+ private:
+  mutable std::once_flag once_;
+  mutable std::vector<Mesh> lods_;
+  Make make_;
+};
+
+/// Where a procedural variant comes from: generator (factory prefix), variant index and seed.
+struct ProceduralSource {
+  std::string generator;  ///< Factory prefix, e.g. "norway_spruce".
+  uint32_t variant = 0;   ///< Variant index.
+  uint64_t seed = 0;      ///< Asset seed.
+};
+
+/// One asset variant: its LOD meshes and metadata (placement only needs the metadata, so a
+/// procedural variant's meshes are made when it is first drawn).
 struct Asset {
-  std::string name;                 ///< Unique name, e.g. "conifer_03".
-  std::string file;                 ///< .glb/.fbx/.obj file, relative to the library folder.
+  std::string name;                 ///< Unique name, e.g. "spruce_03".
+  std::string file;                 ///< .glb/.fbx/.obj file relative to the library folder ("" = procedural).
+  std::optional<ProceduralSource> source;  ///< Set for built-in procedural variants.
   AssetKind kind = AssetKind::Rock; ///< Placement kind.
   Role role = Role::Obstacle;       ///< Class of the object node (trunk for trees).
-  std::vector<Mesh> lods;           ///< LOD meshes; parts carry their own roles (canopy).
-  std::vector<float> lod_screen_sizes;  ///< Thresholds, see render::MeshLods.
+  std::shared_ptr<const AssetGeometry> geometry;  ///< LOD meshes; parts carry their own roles (canopy).
+  std::vector<float> lod_screen_sizes;  ///< Thresholds, see render::MeshLods (one per LOD after the first).
   CollisionProxy proxy;             ///< Solid proxy (None for ground vegetation).
+  /// The LOD meshes (lods()[0] full detail), made on first use for a procedural variant.
+  const std::vector<Mesh>& lods() const { return geometry->lods(); }
 };
 
 /// All assets, with per-kind index lists for placement.

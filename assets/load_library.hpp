@@ -7,7 +7,9 @@
 
 namespace silva::assets {
 
-/// Loads every asset listed in `library_json` (schema in assets/manifest.hpp). A file holding a
+/// Loads every asset listed in `library_json` (schema in assets/manifest.hpp). A generator entry
+/// names a built-in procedural variant: its metadata is read now and its meshes are generated when
+/// first used (assets::lazy_asset). A file holding a
 /// single level gets further levels built with build_lods (one per threshold, at most 3); the
 /// asset keeps min(levels, thresholds + 1) levels and as many thresholds as it has extra levels.
 /// Throws InputError naming the file and key for a bad manifest or a missing, corrupt or

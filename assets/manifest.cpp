@@ -1,6 +1,8 @@
 #include "assets/manifest.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 
@@ -17,6 +19,13 @@ using nlohmann::json;
 constexpr const char* kFormat = "silva-asset-library";
 constexpr int kVersion = 1;
 constexpr const char* kShapeNames[] = {"none", "cylinder", "capsule", "box", "sphere"};
+
+/// Every kind name, comma-separated (for error messages).
+std::string kind_names() {
+  std::string out;
+  for (size_t k = 0; k < size_t(AssetKind::Count); ++k) out += std::string(k ? ", " : "") + kind_name(AssetKind(k));
+  return out;
+}
 
 json vec_json(const Vec3f& v) { return {v.x(), v.y(), v.z()}; }
 
@@ -112,14 +121,26 @@ CollisionProxy read_proxy(const Reader& r) {
   return p;
 }
 
-ManifestEntry read_entry(const Reader& r) {
-  ManifestEntry e;
-  e.name = r.string("name");
+/// The generator, variant and seed of a generator entry.
+ProceduralSource read_source(const Reader& r) {
+  ProceduralSource s;
+  s.generator = r.string("generator");
+  const json& v = r.need("variant");
+  if (!v.is_number_integer() || v.get<int64_t>() < 0 || v.get<int64_t>() > 999999)
+    r.fail("variant", "must be an integer in [0, 999999]");
+  s.variant = v.get<uint32_t>();
+  const std::string seed = r.string("seed");
+  char* end = nullptr;
+  s.seed = std::strtoull(seed.c_str(), &end, 16);
+  if (seed.rfind("0x", 0) != 0 || seed.size() < 3 || seed.size() > 18 || *end != '\0')
+    r.fail("seed", "must be a hexadecimal string \"0x...\" of at most 16 digits");
+  return s;
+}
+
+/// The file, axis and parts of a file entry.
+void read_file_fields(const Reader& r, ManifestEntry& e) {
   e.file = r.string("file");
   if (std::filesystem::path(e.file).is_absolute()) r.fail("file", "must be relative to the manifest's folder");
-  if (!parse_kind(r.string("kind"), e.kind))
-    r.fail("kind", "must be one of conifer_tree, broadleaf_tree, dead_tree, stump, grass, fern, shrub, rock, log");
-  e.role = r.role(r.need("class"), "class");
   if (r.has("up_axis")) {
     const std::string up = r.string("up_axis");
     if (up != "y" && up != "z") r.fail("up_axis", "must be \"y\" or \"z\"");
@@ -128,6 +149,18 @@ ManifestEntry read_entry(const Reader& r) {
   const json& parts = r.need("parts");
   if (!parts.is_object() || parts.empty()) r.fail("parts", "must be a non-empty object {material name: class}");
   for (const auto& [material, cls] : parts.items()) e.parts[material] = r.role(cls, "parts." + material);
+}
+
+ManifestEntry read_entry(const Reader& r) {
+  ManifestEntry e;
+  e.name = r.string("name");
+  if (r.has("generator") == r.has("file")) r.fail("", "needs exactly one of \"file\" and \"generator\"");
+  if (r.has("generator"))
+    e.source = read_source(r);
+  else
+    read_file_fields(r, e);
+  if (!parse_kind(r.string("kind"), e.kind)) r.fail("kind", "must be one of " + kind_names());
+  e.role = r.role(r.need("class"), "class");
   e.proxy = read_proxy(Reader(r.file(), r.need("collision"), r.where() + ".collision"));
   const json& sizes = r.need("lod_screen_sizes");
   if (!sizes.is_array()) r.fail("lod_screen_sizes", "must be an array of numbers");
@@ -148,29 +181,38 @@ ManifestEntry manifest_entry(const Asset& asset) {
   e.file = asset.file;
   e.kind = asset.kind;
   e.role = asset.role;
-  for (const MeshPart& part : asset.lods.at(0).parts) {
+  e.proxy = asset.proxy;
+  e.lod_screen_sizes = asset.lod_screen_sizes;
+  if (asset.file.empty() && asset.source) {
+    e.source = asset.source;
+    return e;
+  }
+  for (const MeshPart& part : asset.lods().at(0).parts) {
     auto [it, inserted] = e.parts.try_emplace(material_name(part.material), part.role);
     if (!inserted && it->second != part.role)
       throw InputError("asset " + asset.name + ": material " + it->first + " is used with two classes");
   }
-  e.proxy = asset.proxy;
-  e.lod_screen_sizes = asset.lod_screen_sizes;
   return e;
 }
 
 std::string manifest_text(std::span<const ManifestEntry> entries) {
   json assets = json::array();
   for (const ManifestEntry& e : entries) {
-    json parts = json::object();
-    for (const auto& [material, role] : e.parts) parts[material] = role_name(role);
-    assets.push_back({{"name", e.name},
-                      {"file", e.file},
-                      {"kind", kind_name(e.kind)},
-                      {"class", role_name(e.role)},
-                      {"up_axis", e.z_up ? "z" : "y"},
-                      {"parts", parts},
-                      {"collision", proxy_json(e.proxy)},
-                      {"lod_screen_sizes", e.lod_screen_sizes}});
+    json entry = {{"name", e.name}};
+    if (e.source) {
+      char seed[24];
+      std::snprintf(seed, sizeof seed, "0x%llx", static_cast<unsigned long long>(e.source->seed));
+      entry["generator"] = e.source->generator, entry["variant"] = e.source->variant, entry["seed"] = seed;
+    } else {
+      json parts = json::object();
+      for (const auto& [material, role] : e.parts) parts[material] = role_name(role);
+      entry["file"] = e.file, entry["up_axis"] = e.z_up ? "z" : "y", entry["parts"] = parts;
+    }
+    entry["kind"] = kind_name(e.kind);
+    entry["class"] = role_name(e.role);
+    entry["collision"] = proxy_json(e.proxy);
+    entry["lod_screen_sizes"] = e.lod_screen_sizes;
+    assets.push_back(std::move(entry));
   }
   return json{{"format", kFormat}, {"version", kVersion}, {"assets", assets}}.dump(2) + "\n";
 }

@@ -2,12 +2,14 @@
 /// @file library.json, the asset library manifest (schema in assets/README.md):
 ///
 ///   {"format": "silva-asset-library", "version": 1, "assets": [{
-///     "name": "conifer_00",             unique asset name
-///     "file": "conifer_00.glb",         mesh file relative to library.json (.glb/.gltf/.fbx/.obj ...)
+///     "name": "spruce_00",              unique asset name
+///     "file": "spruce_00.glb",          mesh file relative to library.json (.glb/.gltf/.fbx/.obj ...)
+///       or, for a built-in procedural variant (made when first drawn), instead of file/up_axis/parts:
+///     "generator": "spruce", "variant": 0, "seed": "0x5117a0a55e7"
 ///     "kind": "conifer_tree",           conifer_tree|broadleaf_tree|dead_tree|stump|grass|fern|shrub|rock|log
 ///     "class": "tree_trunk",            role of the object node (ontology role name)
 ///     "up_axis": "y",                   optional: "y" (default; glTF/assimp convention) or "z" (Silva)
-///     "parts": {"bark_conifer": "tree_trunk", "needles": "tree_canopy"},  material name -> role
+///     "parts": {"bark_spruce": "tree_trunk", "needles_spruce": "tree_canopy"},  material name -> role
 ///     "collision": {"shape": "cylinder", "center": [x,y,z], "radius": r, "height": h, "axis": [0,0,1]},
 ///                  sphere: center, radius; box: center, half_extents; capsule: as cylinder
 ///                  (height = length of the core segment); none: no other key
@@ -15,6 +17,7 @@
 ///   }, ...]}
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -26,7 +29,8 @@ namespace silva::assets {
 /// One asset's entry in library.json.
 struct ManifestEntry {
   std::string name;                     ///< Unique asset name.
-  std::string file;                     ///< Mesh file, relative to the manifest's folder.
+  std::string file;                     ///< Mesh file, relative to the manifest's folder ("" for a generator entry).
+  std::optional<ProceduralSource> source;  ///< Generator entry: the built-in variant it names.
   AssetKind kind = AssetKind::Rock;     ///< Placement kind.
   Role role = Role::Obstacle;           ///< Class of the object node.
   bool z_up = false;                    ///< File already in Silva's Z-up axes ("up_axis": "z").

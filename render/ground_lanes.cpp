@@ -82,38 +82,63 @@ VF smoothstep_lanes(float e0, float e1, VF x) {
   return smooth_weight_lanes(hn::Min(hn::Max(t, hn::Zero(d)), hn::Set(d, 1.0f)));
 }
 
+/// mix of a three-channel colour constant towards another, per channel k.
+VF mix_channel(VF c, const float* to, int k, VF t) { return mix_lanes(c, hn::Set(DF(), to[k]), t); }
+
 /// ground_albedo_row for one target.
-void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, size_t count, Vec3f* out) {
+void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count, Vec3f* out,
+                   float* soil_out) {
   const DF d;
   const size_t N = hn::Lanes(d);
   const float* p = positions->data();
   const float* n = normals->data();
   float* o = out->data();
   const auto scaled = [&](VF v, float k) { return hn::Mul(v, hn::Set(d, k)); };
+  const VF one = hn::Set(d, 1.0f);
   for (size_t first = 0; first < count; first += N) {
     const size_t lanes = std::min(N, count - first);
     HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, nin[3 * hn::MaxLanes(d)] = {}, res[3 * hn::MaxLanes(d)];
+    HWY_ALIGN float fin[hn::MaxLanes(d)] = {};
     std::copy(p + 3 * first, p + 3 * (first + lanes), pin);
     std::copy(n + 3 * first, n + 3 * (first + lanes), nin);
+    std::copy(footprints + first, footprints + first + lanes, fin);
     VF px, py, pz, nx, ny, nz;
     hn::LoadInterleaved3(d, pin, px, py, pz);
     hn::LoadInterleaved3(d, nin, nx, ny, nz);
-    const VF flat = smoothstep_lanes(0.75f, 0.95f, nz);
-    const VF patch = fbm2_lanes(scaled(px, 0.15f), scaled(py, 0.15f), 3, kGroundPatchSalt);
-    const VF litter_w = smoothstep_lanes(0.35f, 0.6f, fbm2_lanes(scaled(px, 0.7f), scaled(py, 0.7f), 2, kGroundLitterSalt));
-    const VF fine = fbm2_lanes(scaled(px, 5.0f), scaled(py, 5.0f), 2, kGroundFineSalt);
-    const VF to_litter = hn::Mul(litter_w, flat);
-    const VF to_moss = hn::Mul(smoothstep_lanes(0.52f, 0.68f, patch), flat);
-    const VF brightness = hn::Add(hn::Set(d, 0.7f), hn::Mul(hn::Set(d, 0.6f), fine));
+    const VF footprint = hn::Load(d, fin);
+    const VF flat = smoothstep_lanes(0.6f, 0.9f, nz);
+    const VF fine_detail = hn::Sub(one, smoothstep_lanes(0.01f, 0.05f, footprint));
+    const VF needles = smoothstep_lanes(0.42f, 0.58f, fbm2_lanes(scaled(px, 0.02f), scaled(py, 0.02f), 2, kGroundStandSalt));
+    const VF leaf = value_noise2_lanes(scaled(px, 9.0f), scaled(py, 9.0f), kGroundLeafSalt);
+    const VF dry = hn::Mul(hn::Mul(smoothstep_lanes(0.6f, 0.8f, leaf), hn::Sub(one, needles)), fine_detail);
+    const VF grass =
+        hn::Mul(scaled(smoothstep_lanes(0.62f, 0.78f, fbm2_lanes(scaled(px, 0.06f), scaled(py, 0.06f), 2, kGroundGrassSalt)), 0.8f), flat);
+    const VF moss =
+        hn::Mul(scaled(smoothstep_lanes(0.6f, 0.72f, fbm2_lanes(scaled(px, 0.15f), scaled(py, 0.15f), 3, kGroundMossSalt)), 0.85f), flat);
+    const VF soil = hn::Max(hn::Sub(one, flat), smoothstep_lanes(0.7f, 0.84f, fbm2_lanes(scaled(px, 0.5f),
+                                                                                         scaled(py, 0.5f), 3, kGroundSoilSalt)));
+    const VF grain = fbm2_lanes(scaled(px, 4.0f), scaled(py, 4.0f), 2, kGroundFineSalt);
+    const VF grain_amount = hn::Sub(one, smoothstep_lanes(0.1f, 0.4f, footprint));
+    const VF speckle = value_noise2_lanes(scaled(px, 23.0f), scaled(py, 23.0f), kGroundLeafSalt + 1);
+    const VF brightness =
+        hn::Mul(hn::Add(one, hn::Mul(hn::Sub(scaled(grain, 0.6f), hn::Set(d, 0.3f)), grain_amount)),
+                hn::Add(one, hn::Mul(hn::Sub(scaled(speckle, 0.8f), hn::Set(d, 0.4f)), fine_detail)));
     VF c[3];
     for (int k = 0; k < 3; ++k) {
-      const VF soil = hn::Set(d, kGroundSoil[k]);
-      VF v = hn::Add(soil, hn::Mul(hn::Set(d, kGroundLitter[k] - kGroundSoil[k]), to_litter));
-      v = hn::Add(v, hn::Mul(hn::Sub(hn::Set(d, kGroundMoss[k]), v), to_moss));
+      VF v = mix_lanes(hn::Set(d, kGroundLeafLitter[k]), hn::Set(d, kGroundNeedleLitter[k]), needles);
+      v = mix_channel(v, kGroundDryLeaves, k, dry);
+      v = mix_channel(v, kGroundGrass, k, grass);
+      v = mix_channel(v, kGroundMoss, k, moss);
+      v = mix_channel(v, kGroundSoil, k, soil);
       c[k] = hn::Mul(v, brightness);
     }
     hn::StoreInterleaved3(c[0], c[1], c[2], d, res);
     std::copy(res, res + 3 * lanes, o + 3 * first);
+    if (soil_out) {
+      HWY_ALIGN float w[hn::MaxLanes(d)];
+      hn::Store(soil, d, w);
+      std::copy(w, w + lanes, soil_out + first);
+    }
   }
 }
 
@@ -129,8 +154,9 @@ namespace silva::render {
 HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
 
-void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, size_t count, Vec3f* out) {
-  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, count, out);
+void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
+                       Vec3f* out, float* soil) {
+  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, footprints, count, out, soil);
 }
 
 int64_t ground_simd_target() { return HWY_DYNAMIC_DISPATCH(GroundTargetImpl)(); }

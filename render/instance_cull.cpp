@@ -93,7 +93,6 @@ void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
   out.resize(scene.meshes.size());
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshLods& m = scene.meshes[i];
-    if (m.lods.empty()) throw InputError("render scene: mesh " + std::to_string(i) + " has no LOD (needs lods[0])");
     for (const Mesh* lod : m.lods)
       if (!lod) throw InputError("render scene: mesh " + std::to_string(i) + " has a null LOD pointer");
   }
@@ -113,11 +112,15 @@ void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
 
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
                       bool lod, InstanceSelection& out) {
-  for (size_t i = 0; i < scene.instances.size(); ++i)
-    if (scene.instances[i].mesh >= scene.meshes.size())
-      throw InputError("render scene: instance " + std::to_string(i) + " names mesh " +
-                       std::to_string(scene.instances[i].mesh) + ", but the scene has " +
-                       std::to_string(scene.meshes.size()) + " meshes");
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const uint32_t mesh = scene.instances[i].mesh;
+    if (mesh >= scene.meshes.size())
+      throw InputError("render scene: instance " + std::to_string(i) + " names mesh " + std::to_string(mesh) +
+                       ", but the scene has " + std::to_string(scene.meshes.size()) + " meshes");
+    if (scene.meshes[mesh].lods.empty())
+      throw InputError("render scene: instance " + std::to_string(i) + " draws mesh " + std::to_string(mesh) +
+                       ", which has no LOD (needs lods[0])");
+  }
   const FrustumTests frustum(view);
   out.lod.resize(scene.instances.size());
   out.inside.resize(scene.instances.size());

@@ -18,7 +18,8 @@ struct BoundingSphere {
 };
 
 /// Bounding sphere of every scene mesh (from MeshLods::bounds, or the LODs' positions when
-/// those bounds are empty). Throws InputError for a mesh without LODs or with a null LOD.
+/// those bounds are empty; radius -1 for a mesh without LODs, which no instance may draw). Throws
+/// InputError for a null LOD.
 void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out);
 
 /// What culling decided for every scene instance in one view (indexed by instance).

@@ -35,10 +35,11 @@ Vec3f variation_tint(uint32_t variation) {
   return Vec3f(bright * (1.0f + yellow), bright * (1.0f + 0.4f * yellow), bright * (1.0f - 0.5f * yellow));
 }
 
-/// Forest floor (ground_albedo_row for one point).
+/// Forest floor (ground_albedo_row for one point, at full detail: zero footprint).
 Vec3f ground(const SurfacePoint& s) {
   Vec3f c;
-  ground_albedo_row(&s.position, &s.normal, 1, &c);
+  const float footprint = 0.0f;
+  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c);
   return c;
 }
 

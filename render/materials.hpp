@@ -20,20 +20,39 @@ struct SurfacePoint {
 /// Linear-RGB diffuse albedo of a surface point: a pure function of the point (no state).
 Vec3f material_albedo(const SurfacePoint& s);
 
-/// Forest floor (Material::Ground): soil, leaf/needle litter and moss, blended by slope and noise.
-/// Colours and the fBm salts of its three noise layers (patches, litter, fine grain):
-inline constexpr float kGroundSoil[3] = {0.1f, 0.075f, 0.05f};     ///< Bare soil.
-inline constexpr float kGroundLitter[3] = {0.14f, 0.1f, 0.06f};    ///< Leaf/needle litter.
-inline constexpr float kGroundMoss[3] = {0.08f, 0.1f, 0.035f};     ///< Moss patches.
-inline constexpr uint32_t kGroundPatchSalt = 0x100;   ///< Moss patches, fbm2 of p * 0.15, 3 octaves.
-inline constexpr uint32_t kGroundLitterSalt = 0x200;  ///< Litter, fbm2 of p * 0.7, 2 octaves.
-inline constexpr uint32_t kGroundFineSalt = 0x300;    ///< Brightness grain, fbm2 of p * 5, 2 octaves.
+/// Forest floor (Material::Ground): leaf and needle litter with grassy and mossy patches and a
+/// little bare soil, blended by noise and slope; leaf-sized detail fades out where one pixel
+/// covers more than a few centimetres. Linear-RGB colours of the layers:
+inline constexpr float kGroundLeafLitter[3] = {0.11f, 0.072f, 0.042f};   ///< Brown leaf litter.
+inline constexpr float kGroundDryLeaves[3] = {0.21f, 0.14f, 0.075f};      ///< Dry, lit leaves on top.
+inline constexpr float kGroundNeedleLitter[3] = {0.095f, 0.062f, 0.04f};   ///< Spruce/pine needle litter.
+inline constexpr float kGroundGrass[3] = {0.075f, 0.092f, 0.032f};          ///< Short grass cover.
+inline constexpr float kGroundMoss[3] = {0.06f, 0.085f, 0.022f};          ///< Moss carpets.
+inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< Bare soil.
+/// Salts of the fBm layers (scale in 1/m, octaves): stand 0.02 x2 (leaf vs needle litter),
+/// grass 0.06 x2, moss 0.15 x3, soil 0.5 x3, fine grain 4 x2; leaf detail value noise at 9 and 23.
+inline constexpr uint32_t kGroundStandSalt = 0x100;
+inline constexpr uint32_t kGroundGrassSalt = 0x140;   ///< Grassy openings.
+inline constexpr uint32_t kGroundMossSalt = 0x180;    ///< Moss carpets.
+inline constexpr uint32_t kGroundSoilSalt = 0x200;    ///< Bare-soil patches.
+inline constexpr uint32_t kGroundFineSalt = 0x300;    ///< Brightness grain.
+inline constexpr uint32_t kGroundLeafSalt = 0x340;    ///< Leaf-sized blotches.
 
-/// Ground albedo of `count` points (world positions and normals) into out[i], one point per SIMD
-/// lane: flat = smoothstep(0.75, 0.95, n.z); c = mix(soil, litter, smoothstep(0.35, 0.6, litter
-/// noise) flat); c = mix(c, moss, smoothstep(0.52, 0.68, patch noise) flat); c (0.7 + 0.6 fine),
-/// with shading_noise.hpp's fbm2 evaluated lane by lane in its operation order (every target agrees).
-void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, size_t count, Vec3f* out);
+/// Ground albedo of `count` points (world positions, normals, and the metres one pixel covers
+/// there) into out[i], one point per SIMD lane; `soil` (may be null) receives each point's
+/// bare-soil weight in [0, 1]. With smoothstep(e0, e1, x) and fbm2(x, y, octaves, salt):
+///   flat = smoothstep(0.6, 0.9, n.z); fine_detail = 1 - smoothstep(0.01, 0.05, footprint)
+///   needles = smoothstep(0.42, 0.58, fbm2(0.02 p, 2, stand))
+///   leaf = value_noise2(9 p, leaf); c = mix(leaf_litter, needle_litter, needles)
+///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) fine_detail)
+///   c = mix(c, grass, 0.8 smoothstep(0.62, 0.78, fbm2(0.06 p, 2, grass)) flat)
+///   c = mix(c, moss, 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
+///   soil = max(1 - flat, smoothstep(0.7, 0.84, fbm2(0.5 p, 3, soil))); c = mix(c, soil_colour, soil)
+///   out = c (1 + (0.6 fbm2(4 p, 2, fine) - 0.3) (1 - smoothstep(0.1, 0.4, footprint)))
+///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
+/// with shading_noise.hpp's noise evaluated lane by lane in its operation order (every target agrees).
+void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
+                       Vec3f* out, float* soil = nullptr);
 
 /// The Highway target ground_albedo_row dispatches to now.
 int64_t ground_simd_target();

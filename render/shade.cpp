@@ -1,6 +1,7 @@
 #include "render/shade.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -68,6 +69,8 @@ struct RowTerms {
   std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only Material::Ground pixels set).
   std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
   std::vector<Vec3f> gather_p, gather_n, gather_out;  ///< Compacted ground inputs and results.
+  std::vector<float> gather_footprint, gather_soil;  ///< Metres per pixel there; bare-soil weights.
+  uint64_t bare_soil = 0;           ///< Ground pixels with a bare-soil weight >= 0.5 (all rows evaluated).
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
@@ -83,15 +86,23 @@ struct RowTerms {
     ground_at.clear();
     gather_p.clear();
     gather_n.clear();
+    gather_footprint.clear();
+    const float metres_per_depth = float(1.0 / in.camera.fx);
     for (size_t u = 0; u < w; ++u)
       if (g.depth[row + u] != 0.0f && g.material[row + u] == Material::Ground && g.base_color[row + u] == 0) {
         ground_at.push_back(uint32_t(u));
         gather_p.push_back(g.position[row + u]);
         gather_n.push_back(g.normal[row + u]);
+        gather_footprint.push_back(g.depth[row + u] * metres_per_depth);
       }
     gather_out.resize(ground_at.size());
-    ground_albedo_row(gather_p.data(), gather_n.data(), ground_at.size(), gather_out.data());
-    for (size_t k = 0; k < ground_at.size(); ++k) ground[ground_at[k]] = gather_out[k];
+    gather_soil.resize(ground_at.size());
+    ground_albedo_row(gather_p.data(), gather_n.data(), gather_footprint.data(), ground_at.size(), gather_out.data(),
+                      gather_soil.data());
+    for (size_t k = 0; k < ground_at.size(); ++k) {
+      ground[ground_at[k]] = gather_out[k];
+      bare_soil += gather_soil[k] >= 0.5f ? 1 : 0;
+    }
   }
 };
 
@@ -117,7 +128,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
 
 }  // namespace
 
-void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
+ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const GBuffer& g = in.gbuffer;
   if (g.width != in.camera.width || g.height != in.camera.height)
     throw InputError("shade_rgb: G-buffer " + std::to_string(g.width) + "x" + std::to_string(g.height) +
@@ -129,6 +140,7 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const float exposure = exposure_scale(in.preset.exposure_ev);
   const uint64_t key = grain_key(in.sequence, in.frame);
   const HalfResAo half_ao(g, in.camera);
+  std::atomic<uint64_t> bare_soil{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     RowTerms terms(g.width);
     std::vector<Vec3f> radiance(size_t(g.width)), grain(in.film_grain > 0.0f ? size_t(g.width) : 0);
@@ -145,7 +157,9 @@ void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,
                        &rgb_out[row * 3]);
     }
+    bare_soil += terms.bare_soil;
   });
+  return {bare_soil.load()};
 }
 
 }  // namespace silva::render

@@ -22,12 +22,18 @@ struct ShadeInputs {
   float film_grain;               ///< Grain std-dev in display-linear [0, 1] units (camera.film_grain).
 };
 
+/// What shading saw, for the run's statistics.
+struct ShadeCounts {
+  uint64_t bare_soil_pixels = 0;  ///< Forest-floor pixels whose bare-soil weight is at least 0.5.
+};
+
 /// Shades every pixel: procedural material albedo lit by the sun (shadow-mapped, back-lit foliage
 /// translucency) and the sky/ground hemisphere (screen-space AO at half resolution, reused
 /// only across pixels of similar depth), through exponential height
 /// fog; sky pixels get the analytic sky. Then exposure, ACES tone mapping, film grain, sRGB.
 /// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
 /// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
-void shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out);
+/// Returns the counts of what it shaded.
+ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out);
 
 }  // namespace silva::render

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include <tbb/parallel_for.h>
+
 #include "components/camera.hpp"
 #include "components/phase.hpp"
 #include "components/chunk.hpp"
@@ -12,15 +14,28 @@
 
 namespace silva::systems {
 
-SceneBuilder::SceneBuilder(const assets::AssetLibrary& library) {
-  asset_meshes_.reserve(library.assets.size());
-  for (const assets::Asset& a : library.assets) {
+SceneBuilder::SceneBuilder(const assets::AssetLibrary& library)
+    : library_(&library), asset_meshes_(std::make_shared<std::vector<render::MeshLods>>(library.assets.size())) {}
+
+void SceneBuilder::make_drawable(const std::vector<std::shared_ptr<const ChunkContent>>& chunks) const {
+  std::vector<uint32_t> missing;
+  std::vector<bool> seen(asset_meshes_->size(), false);
+  for (const auto& c : chunks)
+    for (const Vegetation& v : c->objects)
+      if (!seen[v.asset] && (*asset_meshes_)[v.asset].lods.empty()) {
+        seen[v.asset] = true;
+        missing.push_back(v.asset);
+      }
+  // Each variant's meshes are a pure function of its source, so making them in parallel is safe.
+  tbb::parallel_for(size_t(0), missing.size(), [&](size_t k) {
+    const assets::Asset& a = library_->assets[missing[k]];
     render::MeshLods lods;
-    for (const Mesh& m : a.lods) lods.lods.push_back(&m);
+    for (const Mesh& m : a.lods()) lods.lods.push_back(&m);
     lods.lod_screen_sizes = a.lod_screen_sizes;
+    lods.lod_screen_sizes.resize(lods.lods.size() - 1);
     lods.compute_bounds();
-    asset_meshes_.push_back(std::move(lods));
-  }
+    (*asset_meshes_)[missing[k]] = std::move(lods);
+  });
 }
 
 uint32_t variation_seed(const Vec3f& position) {
@@ -32,7 +47,8 @@ uint32_t variation_seed(const Vec3f& position) {
 FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const {
   FrameScene out;
   render::Scene& scene = out.scene;
-  scene.meshes = asset_meshes_;
+  make_drawable(chunks);
+  scene.meshes = *asset_meshes_;
   size_t objects = 0;
   for (const auto& c : chunks) objects += c->objects.size();
   scene.instances.reserve(objects + 2 * chunks.size());

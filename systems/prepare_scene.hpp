@@ -22,13 +22,18 @@ struct FrameScene {
 /// ferns) has instance id 0.
 class SceneBuilder {
  public:
-  /// Registers every asset's LODs as drawable meshes.
+  /// A builder for `library`'s assets (which must outlive it); no asset meshes are made yet.
   explicit SceneBuilder(const assets::AssetLibrary& library);
   /// Scene of the given chunks: terrain, trail piece and every object of each, in chunk order.
+  /// Makes the meshes of assets drawn for the first time (in parallel); copies share them.
   FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
 
  private:
-  std::vector<render::MeshLods> asset_meshes_;
+  /// Fills the drawable meshes of every asset `chunks` place that has none yet.
+  void make_drawable(const std::vector<std::shared_ptr<const ChunkContent>>& chunks) const;
+
+  const assets::AssetLibrary* library_;
+  std::shared_ptr<std::vector<render::MeshLods>> asset_meshes_;  ///< Per asset; empty until first drawn.
 };
 
 /// Per-instance colour-variation seed derived from an object's position (stable across runs).

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Render phase: the active camera's visibility pass and sun shadow map into a frame slot
 /// (system "render_views"), and the frame slots that carry a frame on to the Write phase.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -36,6 +37,8 @@ struct FrameWork {
   io::EncodedSet files;              ///< Encoded outputs.
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
   uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
+  std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class (role) in the view.
+  uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
 };
 
 /// Resource: the renderer, the frame slots (recycled, so each in-flight frame's big buffers are

@@ -44,7 +44,7 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
     const Stopwatch clock;
     const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
                                  f.sequence, uint64_t(f.frame), float(ctx.config.camera.film_grain)};
-    render::shade_rgb(in, work.rgb);
+    work.bare_soil_pixels = render::shade_rgb(in, work.rgb).bare_soil_pixels;
     if (ctx.config.camera.antialias) {
       render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
       work.rgb.swap(work.rgb_scratch);
@@ -52,7 +52,10 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
     work.shade_s = clock.seconds();
   } else {
     work.shade_s = 0;
+    work.bare_soil_pixels = 0;
   }
+  work.pixels_by_role.fill(0);
+  for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
   const Stopwatch clock;
   work.files = io::encode_capture_set(label_planes(work.gbuffer), work.rgb, settings.ontology, settings.outputs, f.frame);
   work.encode_s = clock.seconds();
@@ -77,6 +80,8 @@ void write_frame(const CaptureSettings& settings, const FrameWork& work, Dataset
   stats.encode_s += work.encode_s;
   stats.triangles_submitted += work.triangles_submitted;
   stats.triangles_rasterised += work.triangles_rasterised;
+  for (int r = 0; r < kRoleCount; ++r) stats.pixels_by_role[size_t(r)] += work.pixels_by_role[size_t(r)];
+  stats.bare_soil_pixels += work.bare_soil_pixels;
   ++stats.frames_written;
   if (writer.progress) writer.progress(stats.frames_written, writer.total);
 }

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Write phase: a rendered frame's shading, encoding and files, overlapping the next frame's
 /// render (system "write_dataset").
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -25,6 +26,8 @@ struct CaptureStats {
   uint64_t triangles_submitted = 0;   ///< Sum over frames (camera passes).
   uint64_t triangles_rasterised = 0;  ///< Sum over frames (camera passes).
   uint64_t chunks_generated = 0;      ///< Chunks generated (cache misses).
+  std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class over the frames written.
+  uint64_t bare_soil_pixels = 0;      ///< Forest-floor pixels that look like bare soil (rgb frames).
   double stream_s = 0;   ///< Stream .. Resolve phases (chunk generation on misses included).
   double prepare_s = 0;  ///< Scene building.
   double render_s = 0;   ///< Visibility pass + resolve.

@@ -20,8 +20,8 @@ struct TopView {
 TopView top_view(const assets::Asset& asset) {
   TopView v;
   v.role = asset.role;
-  if (asset.lods.empty()) return v;
-  const Mesh& m = asset.lods.back();
+  if (asset.lods().empty()) return v;
+  const Mesh& m = asset.lods().back();
   for (const Vec3f& p : m.positions) v.radius = std::max(v.radius, std::hypot(p.x(), p.y()));
   v.top = -std::numeric_limits<float>::infinity();
   for (const MeshPart& part : m.parts)

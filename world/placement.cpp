@@ -48,13 +48,13 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
 
   ChunkCandidates out;
   auto propose = [&](AssetKind kind, const PointDraws& d, uint32_t point, uint32_t sub, double cx, double cy) {
-    const auto& variants = lib.by_kind[size_t(kind)];
-    if (variants.empty()) return;
     Rng pos = d.stream(Purpose::PlacementPosition, sub);
     const double r = radius * std::sqrt(pos.uniform_double()), th = kTwoPi * pos.uniform_double();
     const double x = cx + r * std::cos(th), y = cy + r * std::sin(th);
+    Rng variant = d.stream(Purpose::PlacementVariant, sub);
     Candidate c;
-    c.asset = variants[d.stream(Purpose::PlacementVariant, sub).below(uint32_t(variants.size()))];
+    c.asset = pick_asset(ctx.stands, kind, x, y, variant);
+    if (c.asset == UINT32_MAX) return;
     c.kind = kind;
     const auto sr = scale_range(kind);
     c.scale = d.stream(Purpose::PlacementScale, sub).range(sr[0], sr[1]);

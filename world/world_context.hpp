@@ -6,6 +6,7 @@
 
 #include "assets/library.hpp"
 #include "core/config.hpp"
+#include "world/species_stands.hpp"
 #include "world/terrain.hpp"
 #include "world/trail.hpp"
 
@@ -20,6 +21,7 @@ struct WorldContext {
   const assets::AssetLibrary* library = nullptr;  ///< Placeable assets (not owned).
   TerrainField terrain;                        ///< Height function.
   Trail trail;                                 ///< The trail (enabled = false when off).
+  SpeciesStands stands;                        ///< Assets grouped by species, and the stand field.
   std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
   float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.
   int neighbour_ring = 1;                      ///< Chunks on each side whose candidates can touch a chunk's.

@@ -1,5 +1,10 @@
 #include "app/commands/asset_files.hpp"
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <utility>
+
 #include "assets/manifest.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -18,10 +23,11 @@ io::GltfDocument asset_document(const Asset& asset) {
   root.extras = {{"class", role_name(asset.role)}, {"kind", assets::kind_name(asset.kind)}};
   doc.nodes.push_back(root);
   doc.roots = {0};
-  for (size_t k = 0; k < asset.lods.size(); ++k) {
+  const std::vector<Mesh>& lods = asset.lods();
+  for (size_t k = 0; k < lods.size(); ++k) {
     const std::string name = "lod" + std::to_string(k);
-    io::GltfMesh mesh{name, &asset.lods[k], {}};
-    for (const MeshPart& part : asset.lods[k].parts) mesh.part_extras.push_back({{"role", role_name(part.role)}});
+    io::GltfMesh mesh{name, &lods[k], {}};
+    for (const MeshPart& part : lods[k].parts) mesh.part_extras.push_back({{"role", role_name(part.role)}});
     doc.meshes.push_back(std::move(mesh));
     io::GltfNode node;
     node.name = name;
@@ -32,14 +38,25 @@ io::GltfDocument asset_document(const Asset& asset) {
   return doc;
 }
 
-AssetLibrary build_library(const std::filesystem::path& out_dir, uint64_t seed) {
+AssetLibrary build_library(const std::filesystem::path& out_dir, bool glb, uint64_t seed, uint32_t max_variants) {
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw IoError("cannot create " + out_dir.string() + ": " + ec.message());
-  AssetLibrary lib = assets::generate_library(seed);
+  std::vector<std::pair<const assets::Factory*, uint32_t>> variants;
+  for (const assets::Factory& f : assets::factories())
+    for (uint32_t v = 0; v < std::min(f.variants, max_variants); ++v) variants.emplace_back(&f, v);
+  AssetLibrary lib;
+  lib.assets.resize(variants.size());
+  tbb::parallel_for(size_t(0), variants.size(), [&](size_t i) {
+    lib.assets[i] = assets::make_asset(*variants[i].first, seed, variants[i].second);
+  });
+  lib.index_kinds();
   std::vector<ManifestEntry> entries;
-  for (const Asset& a : lib.assets) {
-    io::write_glb(asset_document(a), out_dir / a.file);
+  for (Asset& a : lib.assets) {
+    if (glb) {
+      a.file = a.name + ".glb";
+      io::write_glb(asset_document(a), out_dir / a.file);
+    }
     entries.push_back(assets::manifest_entry(a));
   }
   io::write_file_atomic(out_dir / "library.json", assets::manifest_text(entries));

@@ -69,14 +69,14 @@ void render_cell(const assets::Asset& asset, const Mesh& ground, int size, std::
   render::Scene scene;
   scene.meshes.push_back({{&ground}, {}, {}});
   render::MeshLods lods;
-  for (const Mesh& m : asset.lods) lods.lods.push_back(&m);
+  for (const Mesh& m : asset.lods()) lods.lods.push_back(&m);
   lods.lod_screen_sizes = asset.lod_screen_sizes;
   scene.meshes.push_back(lods);
   for (auto& m : scene.meshes) m.compute_bounds();
   scene.instances.push_back({Affine3f::Identity(), 0, 0, 1});
   scene.instances.push_back({Affine3f::Identity(), 1, role_has_instances(asset.role) ? 1u : 0u, 7});
 
-  const Camera camera = framing_camera(asset.lods[0].bounds(), size);
+  const Camera camera = framing_camera(asset.lods()[0].bounds(), size);
   const render::LightingPreset preset = render::builtin_presets().at("day");
   render::Renderer renderer;
   render::GBuffer gbuffer;
@@ -98,10 +98,21 @@ void blit(const std::vector<uint8_t>& view, int size, std::vector<uint8_t>& shee
 
 }  // namespace
 
-std::vector<const assets::Factory*> select_factories(const std::string& name) {
+std::vector<const assets::Factory*> select_factories(const std::string& names) {
   std::vector<const assets::Factory*> out;
-  for (const assets::Factory& f : assets::factories())
-    if (name == assets::kind_name(f.kind) || name == f.prefix) out.push_back(&f);
+  size_t start = 0;
+  while (start <= names.size()) {
+    const size_t comma = std::min(names.find(',', start), names.size());
+    const std::string name = names.substr(start, comma - start);
+    size_t matched = 0;
+    for (const assets::Factory& f : assets::factories())
+      if (name == assets::kind_name(f.kind) || name == f.prefix) {
+        ++matched;
+        if (std::find(out.begin(), out.end(), &f) == out.end()) out.push_back(&f);
+      }
+    if (matched == 0) return {};
+    start = comma + 1;
+  }
   return out;
 }
 

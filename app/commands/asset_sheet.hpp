@@ -15,9 +15,9 @@ struct SheetLayout {
   int columns = 3;    ///< Variants per row (each two cells wide).
 };
 
-/// The factories `name` selects: every factory of a kind name ("conifer_tree"), or the one factory
-/// whose asset-name prefix it is ("norway_spruce"); empty when it names neither.
-std::vector<const assets::Factory*> select_factories(const std::string& name);
+/// The factories `names` selects, a comma-separated list of kind names ("conifer_tree": every
+/// factory of the kind) and factory prefixes ("norway_spruce"); empty when one name is neither.
+std::vector<const assets::Factory*> select_factories(const std::string& names);
 
 /// Renders variants 0..count-1 of every factory in `factories` (asset seed `seed`) into one
 /// interleaved RGB8 image of `width` x `height`, row by row in factory order.

@@ -16,6 +16,8 @@ namespace {
 
 struct AssetsArgs {
   std::string out;
+  bool glb = false;
+  uint32_t max_variants = UINT32_MAX;
   OutputFlags output;
 };
 
@@ -39,7 +41,8 @@ std::string sheet_names() {
 int sheet_assets(SheetArgs& args) {
   const Reporter reporter(args.output);
   if (select_factories(args.request.kind).empty())
-    throw InputError("--kind " + args.request.kind + ": unknown; expected a kind (" + sheet_names() + ")");
+    throw InputError("--kind " + args.request.kind + ": unknown name; expected kinds or generators, comma-separated (" +
+                     sheet_names() + ")");
   args.request.out = args.out;
   if (args.request.out.extension() != ".png") throw InputError("--out " + args.out + ": expected a .png file");
   const auto parent = args.request.out.parent_path();
@@ -51,6 +54,8 @@ int build_assets(const AssetsArgs& args) {
   const Reporter reporter(args.output);
   AssetsBuildRequest request;
   request.out_dir = args.out;
+  request.glb = args.glb;
+  request.max_variants = args.max_variants;
   if (!args.out.empty()) check_writable_dir(request.out_dir);
   return run_assets_build(request, reporter);
 }
@@ -63,12 +68,18 @@ Handler add_assets_command(CLI::App& root) {
   assets->require_subcommand(1);
   CLI::App* build = assets->add_subcommand(
       "build",
-      "Generate every procedural asset (trees, dead trees, stumps, grass, ferns, shrubs, rocks, "
-      "logs) as .glb files plus library.json. The build runs this once into the build tree.");
+      "Generate every procedural asset variant and write library.json: each variant's class, collision "
+      "proxy and LOD thresholds, while its meshes are generated again when a run first draws it. "
+      "--glb also writes every variant as a .glb file (to inspect, edit or replace). The build runs "
+      "this once into the build tree.");
   build->add_option("--out", args->out, "folder for the library (default: the library folder Silva loads)")
       ->type_name("DIR");
+  build->add_flag("--glb", args->glb, "also write each variant's LOD meshes as <name>.glb (file entries)");
+  build->add_option("--variants", args->max_variants, "at most N variants per generator (default: all)")
+      ->check(CLI::Range(1, 1000))
+      ->type_name("N");
   add_output_flags(*build, args->output);
-  build->footer("Examples:\n  silva assets build --out build/assets\n  silva assets build --json");
+  build->footer("Examples:\n  silva assets build --out build/assets\n  silva assets build --glb --out my-assets --json");
 
   auto sheet_args = std::make_shared<SheetArgs>();
   sheet_args->request.seed = assets::kDefaultAssetSeed;
@@ -76,7 +87,8 @@ Handler add_assets_command(CLI::App& root) {
       "sheet",
       "Render a contact sheet of built-in asset variants: each variant alone on a flat forest floor "
       "in the day preset, its RGB view beside its semantic colours, variants row by row.");
-  sheet->add_option("--kind", sheet_args->request.kind, "a kind (" + sheet_names() + ")")
+  sheet->add_option("--kind", sheet_args->request.kind,
+                    "comma-separated kinds or generators (" + sheet_names() + ")")
       ->required()
       ->type_name("NAME");
   sheet->add_option("--out", sheet_args->out, "PNG file to write")->required()->type_name("FILE.png");
@@ -89,7 +101,9 @@ Handler add_assets_command(CLI::App& root) {
   sheet->add_option("--seed", sheet_args->request.seed, "asset seed (default: the library's)");
   add_output_flags(*sheet, sheet_args->output);
   sheet->footer("Examples:\n  silva assets sheet --kind conifer_tree --out conifers.png\n"
-                "  silva assets sheet --kind rock --count 9 --columns 3 --out rocks.png");
+                "  silva assets sheet --kind rock --count 9 --columns 3 --out rocks.png\n"
+                "  silva assets sheet --kind conifer_tree,broadleaf_tree --count 4 --columns 4 --out trees.png "
+                "(one row per generator)");
   return [args, sheet_args, build] {  // exactly one of build, sheet was parsed (require_subcommand(1))
     if (build->parsed()) return build_assets(*args);
     return sheet_assets(*sheet_args);

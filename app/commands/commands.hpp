@@ -47,6 +47,8 @@ struct WorldRequest {
 /// `silva assets build`: generate the procedural asset library.
 struct AssetsBuildRequest {
   std::filesystem::path out_dir;  ///< --out DIR ("" = the library folder the pipeline uses by default).
+  bool glb = false;               ///< --glb: write every variant's meshes as .glb files too.
+  uint32_t max_variants = UINT32_MAX;  ///< --variants N: at most N variants per generator.
 };
 
 /// `silva assets sheet`: a contact sheet of built-in asset variants.

@@ -35,6 +35,19 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   };
 }
 
+namespace {
+/// What the frames written show: each class's share of all pixels (role names, zeros included)
+/// and the share of all pixels whose forest floor looks like bare soil.
+nlohmann::json pixel_shares(const systems::CaptureStats& s) {
+  uint64_t total = 0;
+  for (uint64_t n : s.pixels_by_role) total += n;
+  const auto share = [&](uint64_t n) { return total ? double(n) / double(total) : 0.0; };
+  nlohmann::json by_class = nlohmann::json::object();
+  for (int r = 0; r < kRoleCount; ++r) by_class[role_name(Role(r))] = share(s.pixels_by_role[size_t(r)]);
+  return {{"pixels", total}, {"by_class", by_class}, {"bare_soil_look", share(s.bare_soil_pixels)}};
+}
+}  // namespace
+
 nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int skipped, double plan_s) {
   char host[256] = {};
   gethostname(host, sizeof host - 1);
@@ -53,6 +66,7 @@ nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int 
       {"chunks_generated", s.chunks_generated},
       {"triangles_submitted", s.triangles_submitted},
       {"triangles_rasterised", s.triangles_rasterised},
+      {"pixel_shares", pixel_shares(s)},
       {"timings_s",
        {{"plan", plan_s},
         {"stream", s.stream_s},

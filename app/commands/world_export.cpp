@@ -45,7 +45,7 @@ io::GltfDocument world_document(const BuiltWorld& world, const assets::AssetLibr
   // Asset meshes are shared: mesh index = first asset mesh + asset index.
   const int first_asset_mesh = int(doc.meshes.size());
   for (const assets::Asset& a : library.assets)
-    doc.meshes.push_back({a.name, &a.lods[0], io::part_class_extras(a.lods[0], a.role, ontology)});
+    doc.meshes.push_back({a.name, &a.lods()[0], io::part_class_extras(a.lods()[0], a.role, ontology)});
 
   std::vector<ObjectRef> objects;
   for (const ChunkContent& c : world.chunks)

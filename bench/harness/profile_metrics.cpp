@@ -106,8 +106,8 @@ double CoverGrid::percent(int layer) const {
 }
 
 double crown_radius(const assets::Asset& asset) {
-  if (asset.lods.empty()) return 0;
-  const Mesh& m = asset.lods[0];
+  if (asset.lods().empty()) return 0;
+  const Mesh& m = asset.lods()[0];
   const bool has_canopy = std::any_of(m.parts.begin(), m.parts.end(), [](const MeshPart& p) { return p.role == Role::TreeCanopy; });
   double r = 0;
   for (const MeshPart& p : m.parts) {

@@ -16,6 +16,10 @@ TEST(AssetSheet, SelectsByKindOrGeneratorName) {
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0], &first);
   EXPECT_TRUE(select_factories("no_such_kind").empty());
+  const auto both = select_factories(std::string("rock,") + first.prefix + ",rock");
+  EXPECT_EQ(both.size(), rocks.size() + 1);  // each factory once
+  EXPECT_TRUE(select_factories("rock,no_such_kind").empty());
+  EXPECT_TRUE(select_factories("rock,").empty());
 }
 
 /// Counts pixels of `rgb` (interleaved) in columns [x0, x1) that have colour `c`.

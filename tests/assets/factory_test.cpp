@@ -26,7 +26,7 @@ SizeRange expected_size(const Factory& f) {
   if (name == "birch") return {0.8f, 27.0f, 16.0f, 0.03f, 0.6f, 12000};
   if (name == "oak") return {0.8f, 28.0f, 28.0f, 0.03f, 1.1f, 12000};
   if (name == "dead_tree") return {2.5f, 20.5f, 12.0f, 0.18f, 0.75f};
-  if (name == "fallen_tree") return {0.2f, 2.5f, 15.0f};
+  if (name == "fallen_tree") return {0.2f, 4.0f, 15.0f};
   switch (f.kind) {
     case AssetKind::Stump: return {0.3f, 0.9f, 1.2f};
     case AssetKind::Grass: return {0.25f, 0.6f, 0.6f, 0, 0, 50};
@@ -71,21 +71,21 @@ bool same_bytes(const Mesh& a, const Mesh& b) {
 
 void check_asset(const Factory& f, const Asset& a) {
   SCOPED_TRACE(a.name);
-  ASSERT_GE(a.lods.size(), 3u);
-  ASSERT_EQ(a.lod_screen_sizes.size(), a.lods.size() - 1);
-  for (size_t k = 0; k < a.lods.size(); ++k) {
-    test::expect_valid_mesh(a.lods[k], "lod" + std::to_string(k));
-    ASSERT_EQ(a.lods[k].parts.size(), a.lods[0].parts.size());
-    for (size_t p = 0; p < a.lods[k].parts.size(); ++p) EXPECT_EQ(a.lods[k].parts[p].role, a.lods[0].parts[p].role);
+  ASSERT_GE(a.lods().size(), 3u);
+  ASSERT_EQ(a.lod_screen_sizes.size(), a.lods().size() - 1);
+  for (size_t k = 0; k < a.lods().size(); ++k) {
+    test::expect_valid_mesh(a.lods()[k], "lod" + std::to_string(k));
+    ASSERT_EQ(a.lods()[k].parts.size(), a.lods()[0].parts.size());
+    for (size_t p = 0; p < a.lods()[k].parts.size(); ++p) EXPECT_EQ(a.lods()[k].parts[p].role, a.lods()[0].parts[p].role);
     if (k > 0) {
-      EXPECT_LT(a.lods[k].triangle_count(), a.lods[k - 1].triangle_count());
+      EXPECT_LT(a.lods()[k].triangle_count(), a.lods()[k - 1].triangle_count());
       EXPECT_GT(a.lod_screen_sizes[k - 1], 0.0f);
       if (k > 1) {
         EXPECT_LT(a.lod_screen_sizes[k - 1], a.lod_screen_sizes[k - 2]);
       }
     }
   }
-  const Mesh& m = a.lods[0];
+  const Mesh& m = a.lods()[0];
   const SizeRange size = expected_size(f);
   EXPECT_LE(m.triangle_count(), size.max_triangles);
   const std::set<Role> roles = allowed_roles(f.kind);
@@ -152,7 +152,7 @@ TEST(Factory, FactoriesSharingAKindDrawIndependentStreams) {
   for (const Factory& f : factories()) {
     if (previous && previous->kind == f.kind) {
       const Asset a = make_asset(*previous, 5, 0), b = make_asset(f, 5, 0);
-      EXPECT_FALSE(same_bytes(a.lods[0], b.lods[0])) << previous->prefix << " " << f.prefix;
+      EXPECT_FALSE(same_bytes(a.lods()[0], b.lods()[0])) << previous->prefix << " " << f.prefix;
     }
     previous = &f;
   }
@@ -168,10 +168,10 @@ TEST(Factory, SameSeedSameBytesDifferentSeedDifferentMesh) {
   for (const Factory& f : factories()) {
     SCOPED_TRACE(f.prefix);
     const Asset a = make_asset(f, 5, 1), b = make_asset(f, 5, 1);
-    ASSERT_EQ(a.lods.size(), b.lods.size());
-    for (size_t k = 0; k < a.lods.size(); ++k) EXPECT_TRUE(same_bytes(a.lods[k], b.lods[k]));
-    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 6, 1).lods[0]));
-    EXPECT_FALSE(same_bytes(a.lods[0], make_asset(f, 5, 2).lods[0]));
+    ASSERT_EQ(a.lods().size(), b.lods().size());
+    for (size_t k = 0; k < a.lods().size(); ++k) EXPECT_TRUE(same_bytes(a.lods()[k], b.lods()[k]));
+    EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 6, 1).lods()[0]));
+    EXPECT_FALSE(same_bytes(a.lods()[0], make_asset(f, 5, 2).lods()[0]));
   }
 }
 
@@ -185,7 +185,10 @@ TEST(Factory, GenerateLibraryIndexesKindsAndNamesAreUnique) {
   for (size_t k = 0; k < size_t(AssetKind::Count); ++k)
     for (uint32_t i : lib.by_kind[k]) EXPECT_EQ(size_t(lib.assets[i].kind), k);
   EXPECT_EQ(lib.assets[0].name, "spruce_00");
-  EXPECT_EQ(lib.assets[0].file, "spruce_00.glb");
+  EXPECT_EQ(lib.assets[0].file, "");  // procedural: no file
+  ASSERT_TRUE(lib.assets[0].source.has_value());
+  EXPECT_EQ(lib.assets[0].source->generator, "spruce");
+  EXPECT_EQ(lib.assets[0].source->seed, 3u);
 }
 
 }  // namespace

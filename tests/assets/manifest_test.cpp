@@ -53,8 +53,12 @@ std::string with(const std::string& from, const std::string& to) {
 
 TEST_F(ManifestTest, RoundTripsEveryGeneratedEntryExactly) {
   std::vector<ManifestEntry> entries;
-  for (const Factory& f : factories()) entries.push_back(manifest_entry(make_asset(f, 9, 0)));
-  entries.back().z_up = true;
+  for (size_t i = 0; i < factories().size(); ++i) {
+    Asset a = make_asset(factories()[i], 9, 0);
+    if (i % 2 == 0) a.file = a.name + ".glb";  // even entries: file entries; odd: generator entries
+    entries.push_back(manifest_entry(a));
+  }
+  entries.front().z_up = true;
   std::ofstream(dir_ / "library.json", std::ios::binary) << manifest_text(entries);
   const std::vector<ManifestEntry> back = read_manifest(dir_ / "library.json");
   ASSERT_EQ(back.size(), entries.size());
@@ -73,6 +77,13 @@ TEST_F(ManifestTest, RoundTripsEveryGeneratedEntryExactly) {
     EXPECT_EQ(a.proxy.height, b.proxy.height);
     EXPECT_EQ(a.proxy.half_extents, b.proxy.half_extents);
     EXPECT_EQ(a.proxy.axis, b.proxy.axis);
+    ASSERT_EQ(a.source.has_value(), i % 2 == 1);
+    ASSERT_EQ(b.source.has_value(), i % 2 == 1);
+    if (a.source) {
+      EXPECT_EQ(a.source->generator, b.source->generator);
+      EXPECT_EQ(a.source->variant, b.source->variant);
+      EXPECT_EQ(a.source->seed, b.source->seed);
+    }
   }
   EXPECT_EQ(back[0].parts.at("needles_spruce"), Role::TreeCanopy);
   EXPECT_EQ(back[0].parts.at("bark_spruce"), Role::TreeTrunk);
@@ -98,7 +109,7 @@ TEST_F(ManifestTest, BadManifestsNameTheFileAndKey) {
   expect_error(with(R"("half_extents": [0.3, 0.2, 0.2])", R"("half_extents": [0.3, 0.2])"),
                "assets[0].collision.half_extents");
   expect_error(with("[0.2, 0.05]", "[0.05, 0.2]"), "assets[0].lod_screen_sizes");
-  expect_error(with(R"("file": "r.obj", )", ""), "assets[0].file");
+  expect_error(with(R"("file": "r.obj", )", ""), "assets[0] needs exactly one of \"file\" and \"generator\"");
   expect_error(with(R"("parts": {"stone": "obstacle"},)", ""), "assets[0].parts");
   const std::string dup = kHeader + kEntry + "," + kEntry + "]}";
   expect_error(dup, "assets[1].name");

@@ -41,7 +41,8 @@ Asset make(const char* name, AssetKind kind, Role role, Material material, asset
   a.name = name;
   a.kind = kind;
   a.role = role;
-  a.lods.push_back(box_mesh(std::max(proxy.footprint_radius(), 0.1f), h, role, material));
+  a.geometry = std::make_shared<const assets::AssetGeometry>(
+      std::vector<Mesh>{box_mesh(std::max(proxy.footprint_radius(), 0.1f), h, role, material)});
   a.proxy = proxy;
   return a;
 }

@@ -70,29 +70,45 @@ TEST(ShadingMaterials, TrailEdgesBlendIntoTheGround) {
 namespace silva::render {
 namespace {
 
-/// The ground formula of materials.hpp from the scalar noise functions (test oracle).
-Vec3f ground_oracle(const Vec3f& p, const Vec3f& n) {
+/// The ground formula of materials.hpp from the scalar noise functions (test oracle); returns the
+/// albedo and sets `soil_weight`.
+Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil_weight) {
   const auto smoothstep = [](float e0, float e1, float x) {
     return smooth_weight(std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f));
   };
-  const float flat = smoothstep(0.75f, 0.95f, n.z());
-  const float patch = fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundPatchSalt);
-  const float litter = smoothstep(0.35f, 0.6f, fbm2(p.x() * 0.7f, p.y() * 0.7f, 2, kGroundLitterSalt));
-  const float fine = fbm2(p.x() * 5.0f, p.y() * 5.0f, 2, kGroundFineSalt);
+  const float flat = smoothstep(0.6f, 0.9f, n.z());
+  const float fine_detail = 1.0f - smoothstep(0.01f, 0.05f, footprint);
+  const float needles = smoothstep(0.42f, 0.58f, fbm2(p.x() * 0.02f, p.y() * 0.02f, 2, kGroundStandSalt));
+  const float leaf = value_noise2(p.x() * 9.0f, p.y() * 9.0f, kGroundLeafSalt);
+  const float dry = smoothstep(0.6f, 0.8f, leaf) * (1.0f - needles) * fine_detail;
+  const float grass = smoothstep(0.62f, 0.78f, fbm2(p.x() * 0.06f, p.y() * 0.06f, 2, kGroundGrassSalt)) * 0.8f * flat;
+  const float moss = smoothstep(0.6f, 0.72f, fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundMossSalt)) * 0.85f * flat;
+  const float soil =
+      std::max(1.0f - flat, smoothstep(0.7f, 0.84f, fbm2(p.x() * 0.5f, p.y() * 0.5f, 3, kGroundSoilSalt)));
+  const float grain = fbm2(p.x() * 4.0f, p.y() * 4.0f, 2, kGroundFineSalt);
+  const float speckle = value_noise2(p.x() * 23.0f, p.y() * 23.0f, kGroundLeafSalt + 1);
+  const float brightness = (1.0f + (grain * 0.6f - 0.3f) * (1.0f - smoothstep(0.1f, 0.4f, footprint))) *
+                           (1.0f + (speckle * 0.8f - 0.4f) * fine_detail);
   Vec3f c;
   for (int k = 0; k < 3; ++k) {
-    float v = kGroundSoil[k] + (kGroundLitter[k] - kGroundSoil[k]) * (litter * flat);
-    v = v + (kGroundMoss[k] - v) * (smoothstep(0.52f, 0.68f, patch) * flat);
-    c[k] = v * (0.7f + 0.6f * fine);
+    float v = mix(kGroundLeafLitter[k], kGroundNeedleLitter[k], needles);
+    v = mix(v, kGroundDryLeaves[k], dry);
+    v = mix(v, kGroundGrass[k], grass);
+    v = mix(v, kGroundMoss[k], moss);
+    v = mix(v, kGroundSoil[k], soil);
+    c[k] = v * brightness;
   }
+  soil_weight = soil;
   return c;
 }
 
 TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
   std::vector<Vec3f> p, n;
+  std::vector<float> footprint;
   for (int i = 0; i < 45; ++i) {  // odd count: full vectors plus a tail
     p.emplace_back(float(i) * 3.7f - 60.0f, float(i * i % 37) * 1.3f - 20.0f, float(i % 5));
-    n.push_back(Vec3f(0.05f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
+    n.push_back(Vec3f(0.1f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
+    footprint.push_back(0.011f * float(i % 41));  // 0 .. 0.44 m: every detail fade
   }
   const std::vector<int64_t> targets = test::highway_targets();
   ASSERT_GE(targets.size(), 2u);
@@ -101,11 +117,15 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     ASSERT_EQ(ground_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<Vec3f> out(p.size());
-    ground_albedo_row(p.data(), n.data(), p.size(), out.data());
+    std::vector<float> soil(p.size());
+    ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), out.data(), soil.data());
     for (size_t i = 0; i < p.size(); ++i) {
-      EXPECT_EQ(out[i], ground_oracle(p[i], n[i])) << i;
+      float soil_weight = -1.0f;
+      EXPECT_EQ(out[i], ground_oracle(p[i], n[i], footprint[i], soil_weight)) << i;
+      EXPECT_EQ(soil[i], soil_weight) << i;
+      float unused = 0.0f;
       SurfacePoint s{p[i], n[i], Vec2f::Zero(), Material::Ground, 0};
-      EXPECT_EQ(material_albedo(s), out[i]) << i;
+      EXPECT_EQ(material_albedo(s), ground_oracle(p[i], n[i], 0.0f, unused)) << i;
     }
   }
 }
