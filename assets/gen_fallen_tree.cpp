@@ -67,6 +67,9 @@ GeneratedAsset generate_fallen_tree(Rng& rng) {
   MeshBuilder b;
   TreeLook look{Material::BarkDead, Role::Obstacle, false, {}};
   mesh_tree(b, s, look, rng);
+  const auto& trunk = s.branches.front().nodes;
+  b.begin_part(Role::Obstacle, Material::Wood);  // the broken end
+  add_disc(b, trunk.back().p, (trunk.back().p - trunk[trunk.size() - 2].p).normalized(), trunk.back().r, 8);
   add_root_plate(b, rng, -0.5f * length * top, rng.range(3.0f, 4.5f) * r0, r0);
   CollisionProxy proxy;
   proxy.shape = CollisionProxy::Shape::Capsule;
