@@ -11,11 +11,26 @@ namespace silva::assets {
 /// Side length of every procedural mask, in texels.
 inline constexpr int kMaskSize = 64;
 
-/// A cluster of pointed broadleaf leaves around the card centre.
-std::shared_ptr<const AlphaMask> leaf_cluster_mask();
-
 /// A conifer needle spray: a stem along v (base at v = 1) with needles angled towards the tip.
 std::shared_ptr<const AlphaMask> needle_spray_mask();
 
+
+/// Scots pine: a twig tip (base at v = 1) with a brush of long needles fanning towards v = 0.
+std::shared_ptr<const AlphaMask> pine_tuft_mask();
+
+/// Larch: a twig along v with short needle tufts on either side.
+std::shared_ptr<const AlphaMask> larch_tuft_mask();
+
+/// Beech: a twig along v with alternate broad oval leaves.
+std::shared_ptr<const AlphaMask> beech_leaves_mask();
+
+/// Silver birch: a thin twig along v with small, sparse pointed leaves.
+std::shared_ptr<const AlphaMask> birch_leaves_mask();
+
+/// Oak: a twig along v with lobed leaves.
+std::shared_ptr<const AlphaMask> oak_leaves_mask();
+
+/// Dead twigs: a bare stem along v with forking side twigs.
+std::shared_ptr<const AlphaMask> bare_twig_mask();
 
 }  // namespace silva::assets

@@ -9,9 +9,13 @@ namespace silva::assets {
 
 namespace {
 constexpr Factory kFactories[] = {
-    {AssetKind::ConiferTree, "conifer", 6, generate_conifer},
-    {AssetKind::BroadleafTree, "broadleaf", 6, generate_broadleaf},
-    {AssetKind::DeadTree, "dead_tree", 4, generate_dead_tree},
+    {AssetKind::ConiferTree, "spruce", 50, generate_spruce},
+    {AssetKind::ConiferTree, "pine", 50, generate_pine},
+    {AssetKind::ConiferTree, "larch", 50, generate_larch},
+    {AssetKind::BroadleafTree, "beech", 50, generate_beech},
+    {AssetKind::BroadleafTree, "birch", 50, generate_birch},
+    {AssetKind::BroadleafTree, "oak", 50, generate_oak},
+    {AssetKind::DeadTree, "dead_tree", 20, generate_dead_tree},
     {AssetKind::Stump, "stump", 20, generate_stump},
     {AssetKind::Grass, "grass", 20, generate_grass},
     {AssetKind::Grass, "grass_tall", 20, generate_tall_grass},
@@ -21,6 +25,7 @@ constexpr Factory kFactories[] = {
     {AssetKind::Shrub, "bramble", 20, generate_bramble},
     {AssetKind::Rock, "rock", 20, generate_rock},
     {AssetKind::Log, "log", 20, generate_log},
+    {AssetKind::Log, "fallen_tree", 20, generate_fallen_tree},
     {AssetKind::GroundCover, "twig", 20, generate_twig},
     {AssetKind::GroundCover, "fallen_branch", 20, generate_fallen_branch},
     {AssetKind::GroundCover, "cone", 20, generate_cone},

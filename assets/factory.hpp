@@ -1,7 +1,7 @@
 #pragma once
-/// @file The built-in asset factories (Infinigen habit): variant i of a factory is seeded by
-/// hash(seed, prefix, i), so a variant never depends on which other variants were generated.
-/// Several factories (species) may share a kind.
+/// @file The built-in asset factories (Infinigen habit): each variant i of a factory is seeded by
+/// hash(seed, prefix, i), so a variant never depends on which other variants were generated,
+/// and factories sharing a kind (several tree species) draw independent streams.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -23,7 +23,7 @@ struct Factory {
   GeneratedAsset (*generate)(Rng&);   ///< The generator.
 };
 
-/// Every built-in factory, in library order (AssetKind order; several factories may share a kind).
+/// Every built-in factory, in library order (AssetKind order; several may share a kind).
 std::span<const Factory> factories();
 
 /// The factory whose prefix is `prefix`, or null.

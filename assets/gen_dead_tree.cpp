@@ -1,65 +1,46 @@
 #include <cmath>
-#include <numbers>
 
+#include "assets/alpha_masks.hpp"
+#include "assets/dead_wood.hpp"
 #include "assets/generators.hpp"
+#include "assets/tree_mesh.hpp"
 
 namespace silva::assets {
 
 namespace {
-/// A point on a polyline at height fraction f of its vertical extent (nodes rise monotonically).
-Vec3f along(const std::vector<TubeNode>& nodes, float z) {
-  for (size_t i = 1; i < nodes.size(); ++i)
-    if (nodes[i].p.z() >= z) {
-      const float t = (z - nodes[i - 1].p.z()) / (nodes[i].p.z() - nodes[i - 1].p.z());
-      return nodes[i - 1].p + t * (nodes[i].p - nodes[i - 1].p);
-    }
-  return nodes.back().p;
+
+/// Bare dead twigs as cards on the finest branches.
+TreeLook dead_look(bool twigs) {
+  TreeLook look{Material::BarkDead, Role::DeadTree, twigs, {}};
+  look.cards = {.mask = bare_twig_mask(), .material = Material::BarkDead, .role = Role::DeadTree,
+                .style = CardStyle::Spray, .half = 0.3f, .spacing = 0.4f, .start = 0.2f, .droop = 0.1f,
+                .level = 2, .max_cards = 800};
+  return look;
 }
+
 }  // namespace
 
 GeneratedAsset generate_dead_tree(Rng& rng) {
-  constexpr float kPi = std::numbers::pi_v<float>;
-  const float full_height = rng.range(8.0f, 15.0f);
-  const float r0 = rng.range(0.15f, 0.35f);
-  const bool snapped = rng.uniform() < 0.35f;
-  const float height = snapped ? full_height * rng.range(0.55f, 0.8f) : full_height;
-  const float top_radius = snapped ? 0.5f * r0 : 0.05f * r0;
-
-  std::vector<TubeNode> trunk;
-  Vec3f p = Vec3f::Zero();
-  constexpr int kNodes = 6;
-  for (int i = 0; i < kNodes; ++i) {
-    const float f = float(i) / float(kNodes - 1);
-    trunk.push_back({p, r0 * (1.1f - f) + top_radius * f});
-    p += Vec3f(rng.range(-0.03f, 0.03f) * height, rng.range(-0.03f, 0.03f) * height, height / float(kNodes - 1));
-  }
+  const float length = rng.range(8.0f, 20.0f);
+  const float r0 = std::clamp(length / 80.0f * rng.range(0.85f, 1.2f), 0.1f, 0.35f);
+  const bool snapped = rng.uniform() < 0.8f;
+  const float top = snapped ? rng.range(0.35f, 0.8f) : 1.0f;
+  const Skeleton s = dead_skeleton(length, r0, top, rng);
   MeshBuilder b;
-  b.begin_part(Role::DeadTree, Material::BarkDead);
-  add_tube(b, trunk, 8);
-  const int branches = 4 + int(rng.below(6));
-  for (int i = 0; i < branches; ++i) {
-    const float az = rng.range(0.0f, 2.0f * kPi);
-    const float el = rng.range(-0.15f, 0.8f);
-    const float len = full_height * rng.range(0.12f, 0.3f);
-    const float z = height * rng.range(0.3f, 0.9f);
-    const Vec3f dir(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-    const Vec3f start = along(trunk, z);
-    const float r = 0.3f * r0 * (1.0f - 0.5f * z / height);
-    const Vec3f mid = start + 0.5f * len * dir;
-    const TubeNode branch[] = {{start, r}, {mid, 0.6f * r}, {start + len * dir + Vec3f(0, 0, 0.05f * len), 0.15f * r}};
-    add_tube(b, branch, 5);
-    if (rng.uniform() < 0.5f) {
-      const Vec3f twig_dir = (dir + 0.8f * random_direction(rng)).normalized();
-      const TubeNode twig[] = {{mid, 0.4f * r}, {mid + 0.4f * len * twig_dir, 0.1f * r}};
-      add_tube(b, twig, 4);
-    }
-  }
+  mesh_tree(b, s, dead_look(rng.uniform() < 0.7f), rng);
   if (snapped) {
+    const auto& trunk = s.branches.front().nodes;
+    const TubeNode tip = trunk.back();
+    const Vec3f dir = (tip.p - trunk[trunk.size() - 2].p).normalized();
+    b.begin_part(Role::DeadTree, Material::BarkDead);
+    const Vec3f off = 0.4f * tip.r * random_direction(rng).cross(dir).normalized();
+    const TubeNode splinter[] = {{tip.p - 0.05f * dir + off, 0.5f * tip.r},
+                                 {tip.p + rng.range(0.3f, 0.9f) * dir + 1.5f * off, kMinTubeRadius}};
+    if (splinter[0].r > kMinTubeRadius) add_tube(b, splinter, 4);
     b.begin_part(Role::DeadTree, Material::Wood);
-    const Vec3f top_dir = (trunk.back().p - trunk[kNodes - 2].p).normalized();
-    add_disc(b, trunk.back().p, top_dir, top_radius, 8);
+    add_disc(b, tip.p, dir, tip.r, 8);
   }
-  return {b.finish(), Role::DeadTree, cylinder_proxy(r0, height)};
+  return {b.finish(), Role::DeadTree, trunk_proxy(s)};
 }
 
 }  // namespace silva::assets

@@ -15,12 +15,24 @@ struct GeneratedAsset {
   CollisionProxy proxy;   ///< Solid proxy (shape None for ground vegetation).
 };
 
-/// Conifer: 12-25 m, tapered trunk + stacked needle cones fringed with needle-spray cards.
-GeneratedAsset generate_conifer(Rng& rng);
-/// Broadleaf: 10-20 m, trunk + branches + leaf-card blobs.
-GeneratedAsset generate_broadleaf(Rng& rng);
-/// Dead tree: 8-15 m (snapped: 4-12 m), bent trunk with bare branches (some with twigs), sometimes snapped.
+/// Norway spruce grown by the branching generator (assets/species.hpp), sapling to mature (1-32 m).
+GeneratedAsset generate_spruce(Rng& rng);
+/// Scots pine, sapling to mature (1-28 m).
+GeneratedAsset generate_pine(Rng& rng);
+/// European larch, sapling to mature (1-30 m).
+GeneratedAsset generate_larch(Rng& rng);
+/// European beech, sapling to mature (1-32 m).
+GeneratedAsset generate_beech(Rng& rng);
+/// Silver birch, sapling to mature (1-24 m).
+GeneratedAsset generate_birch(Rng& rng);
+/// Pedunculate oak, sapling to mature (1-26 m).
+GeneratedAsset generate_oak(Rng& rng);
+/// Dead snag: 8-20 m grown trunk, branches mostly broken off short, most with a snapped top
+/// (splinter and wood disc), 70 % with bare twig cards.
 GeneratedAsset generate_dead_tree(Rng& rng);
+/// Fallen dead tree lying along X (centred on the origin), 3.5-14 m, with its torn-up root plate
+/// (soil disc and roots) at the -X end; obstacle role, capsule proxy along the trunk.
+GeneratedAsset generate_fallen_tree(Rng& rng);
 /// Stump: 0.3-0.9 m high, bark sides flaring into 3-6 buttress roots; a weathered sawn (slightly
 /// tilted) or broken, splintered top.
 GeneratedAsset generate_stump(Rng& rng);

@@ -59,7 +59,7 @@ struct ProceduralSource {
 /// One asset variant: its LOD meshes and metadata (placement only needs the metadata, so a
 /// procedural variant's meshes are made when it is first drawn).
 struct Asset {
-  std::string name;                 ///< Unique name, e.g. "conifer_03".
+  std::string name;                 ///< Unique name, e.g. "spruce_03".
   std::string file;                 ///< .glb/.fbx/.obj file relative to the library folder ("" = procedural).
   std::optional<ProceduralSource> source;  ///< Set for built-in procedural variants.
   AssetKind kind = AssetKind::Rock; ///< Placement kind.

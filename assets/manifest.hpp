@@ -2,14 +2,14 @@
 /// @file library.json, the asset library manifest (schema in assets/README.md):
 ///
 ///   {"format": "silva-asset-library", "version": 1, "assets": [{
-///     "name": "conifer_00",             unique asset name
-///     "file": "conifer_00.glb",         mesh file relative to library.json (.glb/.gltf/.fbx/.obj ...)
+///     "name": "spruce_00",              unique asset name
+///     "file": "spruce_00.glb",          mesh file relative to library.json (.glb/.gltf/.fbx/.obj ...)
 ///       or, for a built-in procedural variant (made when first drawn), instead of file/up_axis/parts:
-///     "generator": "conifer", "variant": 0, "seed": "0x5117a0a55e7"
+///     "generator": "spruce", "variant": 0, "seed": "0x5117a0a55e7"
 ///     "kind": "conifer_tree",           conifer_tree|broadleaf_tree|dead_tree|stump|grass|fern|shrub|rock|log
 ///     "class": "tree_trunk",            role of the object node (ontology role name)
 ///     "up_axis": "y",                   optional: "y" (default; glTF/assimp convention) or "z" (Silva)
-///     "parts": {"bark_conifer": "tree_trunk", "needles": "tree_canopy"},  material name -> role
+///     "parts": {"bark_spruce": "tree_trunk", "needles_spruce": "tree_canopy"},  material name -> role
 ///     "collision": {"shape": "cylinder", "center": [x,y,z], "radius": r, "height": h, "axis": [0,0,1]},
 ///                  sphere: center, radius; box: center, half_extents; capsule: as cylinder
 ///                  (height = length of the core segment); none: no other key

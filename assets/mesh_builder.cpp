@@ -41,7 +41,7 @@ void perpendicular_frame(const Vec3f& axis, Vec3f& u, Vec3f& v) {
   v = axis.cross(u);
 }
 
-void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments) {
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height) {
   const size_t n = nodes.size();
   std::vector<uint32_t> prev_ring, ring;
   Vec3f u, v;
@@ -59,11 +59,12 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments) {
       v = t.cross(u);
     }
     ring.clear();
+    const float tex_v = v_height > 0 ? nodes[i].p.z() / v_height : 0.5f * length;
     for (int k = 0; k <= segments; ++k) {
       const float a = 2.0f * std::numbers::pi_v<float> * float(k % segments) / float(segments);
       const Vec3f radial = std::cos(a) * u + std::sin(a) * v;
       ring.push_back(b.vertex(nodes[i].p + nodes[i].r * radial, radial + slope * t,
-                              Vec2f(float(k) / float(segments), 0.5f * length)));
+                              Vec2f(float(k) / float(segments), tex_v)));
     }
     if (i > 0)
       for (int k = 0; k < segments; ++k) {

@@ -33,8 +33,9 @@ struct TubeNode {
 };
 
 /// Adds a closed-side tube along a polyline (>= 2 nodes) with `segments` sides; smooth normals
-/// account for the taper; u goes around (seam duplicated), v along the length in metres / 2.
-void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments);
+/// account for the taper; u goes around (seam duplicated), v along the length in metres / 2, or,
+/// when `v_height` > 0, v = the node's z / v_height (a tree's height fraction, for bark by height).
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height = 0);
 
 /// Adds a flat disc (fan) of `segments` sides facing `normal`.
 void add_disc(MeshBuilder& b, const Vec3f& center, const Vec3f& normal, float radius, int segments);

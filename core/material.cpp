@@ -8,7 +8,9 @@ namespace {
 constexpr const char* kNames[int(Material::Count)] = {
     "ground", "trail", "bark_conifer", "bark_broadleaf", "bark_dead", "needles",
     "leaves", "grass", "fern", "shrub_leaves", "rock", "wood",
-    "log_bark", "broken_wood", "moss", "leaf_litter"};
+    "log_bark", "broken_wood", "moss", "leaf_litter",
+    "bark_spruce", "bark_pine", "bark_larch", "bark_beech", "bark_birch", "bark_oak",
+    "needles_spruce", "needles_pine", "needles_larch", "leaves_beech", "leaves_birch", "leaves_oak"};
 }  // namespace
 
 const char* material_name(Material m) { return kNames[int(m)]; }

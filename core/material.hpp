@@ -22,6 +22,18 @@ enum class Material : uint8_t {
   BrokenWood,   ///< Pale splintered or weathered wood of broken ends.
   Moss,         ///< Moss cushions.
   LeafLitter,   ///< Fallen brown leaves.
+  BarkSpruce,     ///< Norway spruce: red-brown, finely scaled.
+  BarkPine,       ///< Scots pine: grey-brown furrowed low on the trunk, orange flakes higher up (uv.y = height fraction).
+  BarkLarch,      ///< Larch: red-brown, deeply furrowed.
+  BarkBeech,      ///< Beech: smooth pale grey.
+  BarkBirch,      ///< Silver birch: white with dark marks, dark rough base (uv.y = height fraction).
+  BarkOak,        ///< Oak: dark grey-brown, deeply furrowed.
+  NeedlesSpruce,  ///< Norway spruce needles: dark blue-green.
+  NeedlesPine,    ///< Scots pine needles: grey-green.
+  NeedlesLarch,   ///< Larch needles: soft light green.
+  LeavesBeech,    ///< Beech leaves: fresh mid green.
+  LeavesBirch,    ///< Birch leaves: light yellow-green.
+  LeavesOak,      ///< Oak leaves: deep green.
   Count,
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/ground_object_materials.hpp"
+#include "render/bark_materials.hpp"
 #include "render/shading_noise.hpp"
 #include "render/trail_material.hpp"
 
@@ -99,6 +100,18 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BrokenWood: return broken_wood_albedo(s);
     case Material::Moss: return moss_albedo(s);
     case Material::LeafLitter: return leaf_litter_albedo(s);
+    case Material::BarkSpruce:
+    case Material::BarkPine:
+    case Material::BarkLarch:
+    case Material::BarkBeech:
+    case Material::BarkBirch:
+    case Material::BarkOak: return species_bark_albedo(s);
+    case Material::NeedlesSpruce: return foliage(s, Vec3f(0.025f, 0.06f, 0.03f));
+    case Material::NeedlesPine: return foliage(s, Vec3f(0.06f, 0.1f, 0.05f));
+    case Material::NeedlesLarch: return foliage(s, Vec3f(0.11f, 0.2f, 0.05f));
+    case Material::LeavesBeech: return foliage(s, Vec3f(0.08f, 0.18f, 0.035f));
+    case Material::LeavesBirch: return foliage(s, Vec3f(0.13f, 0.22f, 0.045f));
+    case Material::LeavesOak: return foliage(s, Vec3f(0.06f, 0.14f, 0.03f));
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);
@@ -110,7 +123,13 @@ float material_translucency(Material m) {
     case Material::Leaves:
     case Material::Grass:
     case Material::Fern:
-    case Material::ShrubLeaves: return 1.0f;
+    case Material::ShrubLeaves:
+    case Material::NeedlesSpruce:
+    case Material::NeedlesPine:
+    case Material::NeedlesLarch:
+    case Material::LeavesBeech:
+    case Material::LeavesBirch:
+    case Material::LeavesOak: return 1.0f;
     default: return 0.0f;
   }
 }

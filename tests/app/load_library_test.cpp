@@ -131,11 +131,11 @@ TEST_F(LoadLibraryTest, CorruptAssetFileNamesTheFile) {
 
 TEST_F(LoadLibraryTest, UntaggedPartNamesTheFileAndMaterial) {
   std::string text = manifest_text();
-  const std::string tag = R"("needles": "tree_canopy")";
+  const std::string tag = R"("needles_spruce": "tree_canopy")";
   const size_t at = text.find(tag);
   ASSERT_NE(at, std::string::npos);
   text.replace(at, tag.size(), R"("pine_needles": "tree_canopy")");
-  expect_error(variant("untagged", text), {"conifer_00.glb", "needles", "no class"});
+  expect_error(variant("untagged", text), {"spruce_00.glb", "needles_spruce", "no class"});
 }
 
 TEST_F(LoadLibraryTest, BadManifestNamesTheManifest) {

@@ -11,22 +11,30 @@
 namespace silva::assets {
 namespace {
 
-/// Plausible real-world size of each kind: height range (m) of the full-detail bounds.
+/// Plausible real-world size of each factory's assets: height range (m) of the full-detail bounds,
+/// widest horizontal extent, trunk (proxy) diameter range and the most triangles of a variant.
 struct SizeRange {
-  float min_height, max_height, max_width;
+  float min_height, max_height, max_width, min_diameter = 0, max_diameter = 0;
+  size_t max_triangles = 6000;
 };
-SizeRange expected_size(AssetKind k) {
-  switch (k) {
-    case AssetKind::ConiferTree: return {12.0f, 25.5f, 12.0f};
-    case AssetKind::BroadleafTree: return {10.0f, 20.0f, 16.0f};
-    case AssetKind::DeadTree: return {4.0f, 15.5f, 12.0f};
-    case AssetKind::Stump: return {0.3f, 0.95f, 1.8f};
-    case AssetKind::Grass: return {0.05f, 0.85f, 1.0f};
-    case AssetKind::Fern: return {0.15f, 1.1f, 2.8f};
-    case AssetKind::Shrub: return {0.15f, 5.5f, 6.0f};
-    case AssetKind::Rock: return {0.05f, 1.5f, 1.5f};
+SizeRange expected_size(const Factory& f) {
+  const std::string name = f.prefix;
+  if (name == "spruce") return {0.8f, 34.0f, 14.0f, 0.03f, 0.8f, 12000};
+  if (name == "pine") return {0.8f, 34.0f, 17.0f, 0.03f, 0.8f, 12000};
+  if (name == "larch") return {0.8f, 33.0f, 14.0f, 0.03f, 0.8f, 12000};
+  if (name == "beech") return {0.8f, 34.0f, 24.0f, 0.03f, 0.9f, 12000};
+  if (name == "birch") return {0.8f, 27.0f, 16.0f, 0.03f, 0.6f, 12000};
+  if (name == "oak") return {0.8f, 28.0f, 28.0f, 0.03f, 1.1f, 12000};
+  if (name == "dead_tree") return {2.5f, 20.5f, 12.0f, 0.18f, 0.75f};
+  if (name == "fallen_tree") return {0.2f, 4.0f, 15.0f};
+  switch (f.kind) {
+    case AssetKind::Stump: return {0.3f, 0.95f, 1.8f, 0, 0, 3000};
+    case AssetKind::Grass: return {0.05f, 0.85f, 1.0f, 0, 0, 64};
+    case AssetKind::Fern: return {0.15f, 1.1f, 2.8f, 0, 0, 3000};
+    case AssetKind::Shrub: return {0.15f, 5.5f, 6.0f, 0, 0, 3000};
+    case AssetKind::Rock: return {0.05f, 1.5f, 1.5f, 0, 0, 3000};
     case AssetKind::Log: return {0.2f, 0.9f, 6.3f};
-    case AssetKind::GroundCover: return {0.003f, 0.5f, 0.55f};
+    case AssetKind::GroundCover: return {0.003f, 0.5f, 0.55f, 0, 0, 500};
     default: return {0, 0, 0};
   }
 }
@@ -57,18 +65,6 @@ CollisionProxy::Shape expected_proxy(AssetKind k) {
   }
 }
 
-/// Full-detail triangle budget of a kind.
-size_t triangle_budget(AssetKind k) {
-  switch (k) {
-    case AssetKind::Grass: return 64;
-    case AssetKind::GroundCover: return 500;
-    case AssetKind::Fern:
-    case AssetKind::Shrub:
-    case AssetKind::Rock: return 3000;
-    default: return 6000;
-  }
-}
-
 bool same_bytes(const Mesh& a, const Mesh& b) {
   return a.positions.size() == b.positions.size() && a.indices == b.indices &&
          std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(Vec3f)) == 0 &&
@@ -93,13 +89,13 @@ void check_asset(const Factory& f, const Asset& a) {
     }
   }
   const Mesh& m = a.lods()[0];
-  EXPECT_LE(m.triangle_count(), triangle_budget(f.kind));
+  const SizeRange size = expected_size(f);
+  EXPECT_LE(m.triangle_count(), size.max_triangles);
   const std::set<Role> roles = allowed_roles(f.kind);
   for (const MeshPart& p : m.parts) EXPECT_TRUE(roles.count(p.role)) << role_name(p.role);
   EXPECT_TRUE(roles.count(a.role));
   // Sizes: height of the bounds above ground, horizontal extent, origin at the ground contact.
   const AABB box = m.bounds();
-  const SizeRange size = expected_size(f.kind);
   EXPECT_GE(box.max.z(), size.min_height);
   EXPECT_LE(box.max.z(), size.max_height);
   EXPECT_LE(std::max(box.size().x(), box.size().y()), size.max_width);
@@ -122,14 +118,16 @@ void check_asset(const Factory& f, const Asset& a) {
   } else {
     EXPECT_EQ(a.proxy.shape, expected_proxy(f.kind));
   }
-  if (f.kind == AssetKind::ConiferTree || f.kind == AssetKind::BroadleafTree || f.kind == AssetKind::DeadTree) {
-    EXPECT_GE(2 * a.proxy.radius, 0.3f);
-    EXPECT_LE(2 * a.proxy.radius, 0.8f);
+  if (size.max_diameter > 0) {
+    EXPECT_GE(2 * a.proxy.radius, size.min_diameter);
+    EXPECT_LE(2 * a.proxy.radius, size.max_diameter);
+    EXPECT_LE(a.proxy.height, box.max.z());
   }
   if (f.kind == AssetKind::Log) {
     const float length = a.proxy.height + 2 * a.proxy.radius;
+    EXPECT_GE(length, 0.8f * box.size().x());  // along the lying trunk
+    EXPECT_LE(length, size.max_width + 0.5f);
     EXPECT_GE(length, 3.0f);
-    EXPECT_LE(length, 6.5f);
   }
   if (a.proxy.shape != CollisionProxy::Shape::None) {
     EXPECT_GT(a.proxy.footprint_radius(), 0.0f);
@@ -137,13 +135,30 @@ void check_asset(const Factory& f, const Asset& a) {
   }
 }
 
-TEST(Factory, EveryKindHasAFactoryWithSeveralVariants) {
+TEST(Factory, EveryKindHasAFactoryWithSeveralVariantsInKindOrder) {
   std::set<AssetKind> kinds;
+  std::set<std::string> prefixes;
+  AssetKind last = AssetKind(0);
   for (const Factory& f : factories()) {
     kinds.insert(f.kind);
+    EXPECT_TRUE(prefixes.insert(f.prefix).second) << f.prefix;
     EXPECT_GE(f.variants, 4u) << f.prefix;
+    EXPECT_GE(f.kind, last) << f.prefix;
+    last = f.kind;
+    EXPECT_GT(expected_size(f).max_height, 0.0f) << f.prefix << " has no size expectation";
   }
   EXPECT_EQ(kinds.size(), size_t(AssetKind::Count));
+}
+
+TEST(Factory, FactoriesSharingAKindDrawIndependentStreams) {
+  const Factory* previous = nullptr;
+  for (const Factory& f : factories()) {
+    if (previous && previous->kind == f.kind) {
+      const Asset a = make_asset(*previous, 5, 0), b = make_asset(f, 5, 0);
+      EXPECT_FALSE(same_bytes(a.lods()[0], b.lods()[0])) << previous->prefix << " " << f.prefix;
+    }
+    previous = &f;
+  }
 }
 
 TEST(Factory, EveryFactoryMakesValidAssetsForSeveralSeeds) {
@@ -191,10 +206,10 @@ TEST(Factory, GenerateLibraryIndexesKindsAndNamesAreUnique) {
   for (const Asset& a : lib.assets) EXPECT_TRUE(names.insert(a.name).second) << a.name;
   for (size_t k = 0; k < size_t(AssetKind::Count); ++k)
     for (uint32_t i : lib.by_kind[k]) EXPECT_EQ(size_t(lib.assets[i].kind), k);
-  EXPECT_EQ(lib.assets[0].name, "conifer_00");
+  EXPECT_EQ(lib.assets[0].name, "spruce_00");
   EXPECT_EQ(lib.assets[0].file, "");  // procedural: no file
   ASSERT_TRUE(lib.assets[0].source.has_value());
-  EXPECT_EQ(lib.assets[0].source->generator, "conifer");
+  EXPECT_EQ(lib.assets[0].source->generator, "spruce");
   EXPECT_EQ(lib.assets[0].source->seed, 3u);
 }
 

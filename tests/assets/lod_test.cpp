@@ -14,7 +14,7 @@ namespace {
 /// A mesh with a solid icosphere part and `cards` unit cards in a row.
 Mesh sphere_and_cards(int cards) {
   MeshBuilder b;
-  b.begin_part(Role::TreeCanopy, Material::Leaves, leaf_cluster_mask(), true);
+  b.begin_part(Role::TreeCanopy, Material::Leaves, beech_leaves_mask(), true);
   for (int i = 0; i < cards; ++i) add_card(b, Vec3f(float(3 * i), 0, 0), Vec3f(0.5f, 0, 0), Vec3f(0, 0, 0.5f));
   Mesh m = b.finish();
   Mesh sphere = unit_icosphere(3);

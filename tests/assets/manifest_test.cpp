@@ -85,8 +85,8 @@ TEST_F(ManifestTest, RoundTripsEveryGeneratedEntryExactly) {
       EXPECT_EQ(a.source->seed, b.source->seed);
     }
   }
-  EXPECT_EQ(back[0].parts.at("needles"), Role::TreeCanopy);
-  EXPECT_EQ(back[0].parts.at("bark_conifer"), Role::TreeTrunk);
+  EXPECT_EQ(back[0].parts.at("needles_spruce"), Role::TreeCanopy);
+  EXPECT_EQ(back[0].parts.at("bark_spruce"), Role::TreeTrunk);
 }
 
 TEST_F(ManifestTest, ReadsAHandWrittenEntry) {

@@ -1,0 +1,58 @@
+#pragma once
+/// @file Turns a branching skeleton into a mesh: tapered bark tubes for branches at least
+/// kMinTubeRadius thick, and alpha-masked foliage (or bare-twig) cards on the twigs.
+#include <memory>
+
+#include "assets/generators.hpp"
+#include "assets/tree_skeleton.hpp"
+#include "core/rng.hpp"
+
+namespace silva::assets {
+
+/// Thinner branch parts than this radius (m) are drawn by cards, never as tubes (thin tubes alias).
+inline constexpr float kMinTubeRadius = 0.015f;
+
+/// Most triangles of one tree's full-detail mesh: cards are thinned to stay within it.
+inline constexpr int kTreeTriangleBudget = 9000;
+
+/// How cards sit on a twig.
+enum class CardStyle : uint8_t {
+  Spray,    ///< Card base on the twig, pointing along it (needle sprays, leafy shoots).
+  Cluster,  ///< Card centred on the twig, facing outwards and up (leaf clusters).
+};
+
+/// Foliage (or bare twig) cards of one tree.
+struct FoliageParams {
+  std::shared_ptr<const AlphaMask> mask;  ///< Card silhouette.
+  Material material = Material::Leaves;   ///< Card material.
+  Role role = Role::TreeCanopy;           ///< Card role.
+  CardStyle style = CardStyle::Spray;     ///< Placement.
+  float half = 0.2f;        ///< Half size of a card (m).
+  float spacing = 0.2f;     ///< Distance between cards along a twig (m).
+  float start = 0.0f;       ///< Fraction of a twig's length where its cards begin.
+  float droop = 0.2f;       ///< Spray cards tilt below their twig by this slope.
+  int level = 2;            ///< Branches of this order and above carry cards along [start, 1].
+  int max_cards = 4500;     ///< Cap: spacing grows until the tree has at most this many cards.
+};
+
+/// Bark and foliage of one tree.
+struct TreeLook {
+  Material bark = Material::BarkBroadleaf;  ///< Tube material; tube uv.y = node z / the skeleton's top z.
+  Role bark_role = Role::TreeTrunk;         ///< Tube role.
+  bool foliage = true;                      ///< False: no cards at all.
+  FoliageParams cards;                      ///< The cards.
+};
+
+/// Adds the bark part (tubes, trunk flared at the ground) and the card part of `s` to `b`;
+/// cards whose centre would lie inside the trunk are left out, and the card spacing grows so that
+/// tubes and cards together stay within kTreeTriangleBudget.
+void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng);
+
+/// The tree's collision proxy: a vertical cylinder of the trunk radius at breast height
+/// (1.3 m, or the base for lower trunks) and the height of the trunk's tube.
+CollisionProxy trunk_proxy(const Skeleton& s);
+
+/// True when `p` lies inside the trunk (branch 0) tube.
+bool inside_trunk(const Skeleton& s, const Vec3f& p);
+
+}  // namespace silva::assets
