@@ -33,8 +33,9 @@ Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant) {
   a.file = a.name + ".glb";
   a.kind = factory.kind;
   a.role = g.role;
-  a.lods = build_lods(g.mesh);
-  a.lod_screen_sizes.assign(std::begin(kLodScreenSizes), std::begin(kLodScreenSizes) + (a.lods.size() - 1));
+  LodChain chain = build_lods(g.mesh);
+  a.lods = std::move(chain.lods);
+  a.lod_screen_sizes = std::move(chain.screen_sizes);
   a.proxy = g.proxy;
   return a;
 }

@@ -19,9 +19,12 @@ AssetLibrary load_library(const std::filesystem::path& library_json) {
     a.proxy = e.proxy;
     a.lods = import_asset_lods(library_json.parent_path() / e.file, e.parts, e.z_up,
                                library_json.string() + " assets[" + std::to_string(i) + "]");
-    if (a.lods.size() == 1 && !e.lod_screen_sizes.empty())
-      a.lods = build_lods(a.lods[0], std::span(kLodRatios).first(std::min(e.lod_screen_sizes.size(), std::size(kLodRatios))));
     a.lod_screen_sizes = e.lod_screen_sizes;
+    if (a.lods.size() == 1 && !e.lod_screen_sizes.empty()) {
+      LodChain chain = build_lods(a.lods[0], e.lod_screen_sizes);
+      a.lods = std::move(chain.lods);
+      a.lod_screen_sizes = std::move(chain.screen_sizes);
+    }
     a.lod_screen_sizes.resize(std::min(a.lod_screen_sizes.size(), a.lods.size() - 1));
     a.lods.resize(a.lod_screen_sizes.size() + 1);
     lib.assets.push_back(std::move(a));

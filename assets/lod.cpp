@@ -9,20 +9,22 @@ namespace silva::assets {
 
 namespace {
 
-/// Simplifies one solid part's triangles (indices into `full`) to about `ratio` of them.
-std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, float ratio) {
+/// Simplifies one solid part's triangles (indices into `full`) towards `ratio` of them, within
+/// `max_error` relative to the extent of full's positions.
+std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, float ratio, float max_error) {
   const uint32_t* src = full.indices.data() + part.first_index;
   const size_t triangles = part.index_count / 3;
   const size_t target = std::max<size_t>(3, size_t(std::lround(float(triangles) * ratio)) * 3);
   std::vector<uint32_t> out(part.index_count);
   const float* pos = full.positions[0].data();
   size_t n = meshopt_simplify(out.data(), src, part.index_count, pos, full.positions.size(), sizeof(Vec3f),
-                              target, 0.2f, 0, nullptr);
-  if (n > target + target / 4) {  // seams or borders held it back: fall back to sloppy clustering
+                              target, max_error, 0, nullptr);
+  if (n > target + target / 4) {  // seams or borders held it back: sloppy clustering, if as accurate
     std::vector<uint32_t> sloppy(part.index_count);
+    float error = 0;
     const size_t m = meshopt_simplifySloppy(sloppy.data(), src, part.index_count, pos, full.positions.size(),
-                                            sizeof(Vec3f), target, 1.0f, nullptr);
-    if (m >= 3 && m < n) {
+                                            sizeof(Vec3f), target, max_error, &error);
+    if (m >= 3 && m < n && error <= max_error) {
       out.swap(sloppy);
       n = m;
     }
@@ -32,53 +34,37 @@ std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, floa
   return out;
 }
 
-/// Keeps about `ratio` of a card part's quads (6 indices each, evenly spread) and scales each
-/// kept card about its centre by sqrt(1/ratio) (at most 2x) so the silhouette keeps its coverage.
-std::vector<uint32_t> thin_cards(const Mesh& full, const MeshPart& part, float ratio, std::vector<Vec3f>& positions) {
-  const size_t cards = part.index_count / 6;
-  const size_t keep = std::clamp<size_t>(size_t(std::lround(float(cards) * ratio)), 1, cards);
-  const float scale = std::min(2.0f, std::sqrt(float(cards) / float(keep)));
-  std::vector<uint32_t> out;
-  for (size_t k = 0; k < cards; ++k) {
-    if ((k + 1) * keep / cards == k * keep / cards) continue;
-    const uint32_t* q = full.indices.data() + part.first_index + 6 * k;
-    uint32_t verts[4];
-    size_t nv = 0;
-    for (int i = 0; i < 6; ++i)
-      if (std::find(verts, verts + nv, q[i]) == verts + nv && nv < 4) verts[nv++] = q[i];
-    Vec3f c = Vec3f::Zero();
-    for (size_t i = 0; i < nv; ++i) c += full.positions[verts[i]];
-    c /= float(nv);
-    for (size_t i = 0; i < nv; ++i) positions[verts[i]] = c + scale * (full.positions[verts[i]] - c);
-    out.insert(out.end(), q, q + 6);
-  }
-  return out;
-}
-
 }  // namespace
 
-Mesh reduce_mesh(const Mesh& full, float ratio) {
-  std::vector<Vec3f> positions = full.positions;
+float lod_error_bound(float screen_size) { return kLodMaxErrorPixels / (kLodReferenceHeight * screen_size); }
+
+Mesh reduce_mesh(const Mesh& full, float ratio, float max_error) {
   std::vector<std::vector<uint32_t>> part_indices;
-  for (const MeshPart& part : full.parts)
-    part_indices.push_back(part.mask && part.index_count % 6 == 0 ? thin_cards(full, part, ratio, positions) : simplify_part(full, part, ratio));
-  return compact_mesh(full, positions, part_indices);
+  for (const MeshPart& part : full.parts) {
+    const auto first = full.indices.begin() + part.first_index;
+    part_indices.push_back(part.mask ? std::vector<uint32_t>(first, first + part.index_count)
+                                     : simplify_part(full, part, ratio, max_error));
+  }
+  return compact_mesh(full, full.positions, part_indices);
 }
 
-std::vector<Mesh> build_lods(const Mesh& full, std::span<const float> ratios) {
-  std::vector<Mesh> lods = {full};
-  for (float ratio : ratios) {
-    bool reduced = false;
-    for (int attempt = 0; attempt < 5 && !reduced; ++attempt, ratio *= 0.5f) {
-      Mesh m = reduce_mesh(full, ratio);
-      if (m.triangle_count() < lods.back().triangle_count()) {
-        lods.push_back(std::move(m));
-        reduced = true;
+LodChain build_lods(const Mesh& full, std::span<const float> screen_sizes) {
+  LodChain chain;
+  chain.lods = {full};
+  const size_t levels = std::min(screen_sizes.size(), std::size(kLodRatios));
+  for (size_t k = 0; k < levels; ++k) {
+    const float max_error = lod_error_bound(screen_sizes[k]);
+    float ratio = kLodRatios[k];
+    for (int attempt = 0; attempt < 5; ++attempt, ratio *= 0.5f) {
+      Mesh m = reduce_mesh(full, ratio, max_error);
+      if (m.triangle_count() < chain.lods.back().triangle_count()) {
+        chain.lods.push_back(std::move(m));
+        chain.screen_sizes.push_back(screen_sizes[k]);
+        break;
       }
     }
-    if (!reduced) break;
   }
-  return lods;
+  return chain;
 }
 
 }  // namespace silva::assets

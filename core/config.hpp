@@ -78,6 +78,7 @@ struct WorldConfig {
 /// Renderer switches (`[render]`).
 struct RenderConfig {
   bool lod = true;  ///< render.lod
+  double ground_cover_distance = 40;  ///< render.ground_cover_distance (m)
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

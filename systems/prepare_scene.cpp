@@ -5,9 +5,11 @@
 #include "components/camera.hpp"
 #include "components/phase.hpp"
 #include "components/chunk.hpp"
+#include "components/world_source.hpp"
 #include "core/rng.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/collision_proxy.hpp"
+#include "world/plan_captures.hpp"
 #include "world/terrain_lod.hpp"
 
 namespace silva::systems {
@@ -20,6 +22,7 @@ SceneBuilder::SceneBuilder(const assets::AssetLibrary& library) {
     lods.lod_screen_sizes = a.lod_screen_sizes;
     lods.compute_bounds();
     asset_meshes_.push_back(std::move(lods));
+    ground_cover_.push_back(a.kind == AssetKind::Grass || a.kind == AssetKind::Fern ? 1 : 0);
   }
 }
 
@@ -29,7 +32,12 @@ uint32_t variation_seed(const Vec3f& position) {
   return uint32_t(hash_combine(hash_combine(bits[0], bits[1]), bits[2]));
 }
 
-FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const {
+double ground_cover_cutoff(uint32_t variation, double ground_cover_distance) {
+  return ground_cover_distance * (0.75 + 0.25 * double(variation) / 4294967296.0);
+}
+
+FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
+                               double ground_cover_distance) const {
   FrameScene out;
   render::Scene& scene = out.scene;
   scene.meshes = asset_meshes_;
@@ -56,10 +64,13 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
     add_world_mesh(c->trail, nullptr, AABB{});
     for (const Vegetation& v : c->objects) {
       render::Instance inst;
+      inst.variation = variation_seed(v.position);
+      if (ground_cover_[v.asset] != 0 &&
+          (v.position.cast<double>() - eye).norm() > ground_cover_cutoff(inst.variation, ground_cover_distance))
+        continue;
       inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);
       inst.mesh = v.asset;
       inst.instance_id = v.instance_id;
-      inst.variation = variation_seed(v.position);
       scene.instances.push_back(inst);
     }
   }
@@ -71,12 +82,16 @@ void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& librar
   world.set_resource(PreparedScene{});
   world.system("prepare_scene")
       .phase(Phase::Prepare)
-      .reads_resource<CaptureQueue, ViewChunks>()
+      .reads_resource<WorldSource, CaptureQueue, ViewChunks>()
       .writes_resource<world::ChunkCache, PreparedScene>()
+      .reads<world::PlannedFrame>()
       .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
-        if (sys.resource<const CaptureQueue>().active.is_null()) return;
+        const ecs::Entity camera = sys.resource<const CaptureQueue>().active;
+        if (camera.is_null()) return;
         const auto& coords = sys.resource<const ViewChunks>().coords;
-        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords));
+        const Vec3d eye = sys.get<const world::PlannedFrame>(camera).camera.position();
+        const double distance = sys.resource<const WorldSource>().ctx->config.render.ground_cover_distance;
+        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords), eye, distance);
       });
 }
 

@@ -24,15 +24,22 @@ class SceneBuilder {
  public:
   /// Registers every asset's LODs as drawable meshes.
   explicit SceneBuilder(const assets::AssetLibrary& library);
-  /// Scene of the given chunks: terrain, trail piece and every object of each, in chunk order.
-  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
+  /// Scene of the given chunks seen from `eye`: terrain, trail piece and every object of each, in
+  /// chunk order, but ground cover (grass, ferns) beyond its ground_cover_cutoff.
+  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
+                   double ground_cover_distance) const;
 
  private:
   std::vector<render::MeshLods> asset_meshes_;
+  std::vector<uint8_t> ground_cover_;  ///< Per asset: 1 for grass and ferns.
 };
 
 /// Per-instance colour-variation seed derived from an object's position (stable across runs).
 uint32_t variation_seed(const Vec3f& position);
+
+/// Distance from the camera beyond which the ground-cover object with variation seed `variation`
+/// is not drawn: between 75 % and 100 % of render.ground_cover_distance (no visible line).
+double ground_cover_cutoff(uint32_t variation, double ground_cover_distance);
 
 /// Resource: the scene the Render phase draws for the active camera (left as it was without one).
 struct PreparedScene {

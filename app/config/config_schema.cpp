@@ -101,6 +101,10 @@ std::vector<ConfigKey> build_schema() {
        above(0, 1e5), {}, [](Config& c) -> FieldRef { return &c.world.render_distance; }},
       {"render.lod", T::Bool, "level of detail by screen size; false = full detail everywhere", {},
        {}, [](Config& c) -> FieldRef { return &c.render.lod; }},
+      {"render.ground_cover_distance", T::Float,
+       "grass and ferns farther from the camera are not drawn (ground shows, labels follow), in every "
+       "LOD mode, metres",
+       above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.render.ground_cover_distance; }},
   };
 }
 
