@@ -40,8 +40,8 @@ class ClearanceProbe {
   /// True when a sphere of radius `r` about `eye` meets the crown of object `v`.
   bool near_crown(const Vegetation& v, const Vec3d& eye, double r) const;
 
-  const WorldContext& ctx_;
-  const std::vector<CrownProfile>& crowns_;
+  const WorldContext& ctx_;                  ///< Config, terrain and library.
+  const std::vector<CrownProfile>& crowns_;  ///< Crown profile per asset.
   std::vector<Vegetation> solids_;  ///< Nearby objects with a solid proxy.
   std::vector<Vegetation> crowned_;  ///< Nearby objects with a crown.
 };
