@@ -75,9 +75,9 @@ Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant) {
   a.source = ProceduralSource{factory.prefix, variant, seed};
   a.kind = factory.kind;
   a.role = g.role;
-  auto geometry = std::make_shared<const AssetGeometry>(build_lods(g.mesh));
-  a.lod_screen_sizes.assign(std::begin(kLodScreenSizes), std::begin(kLodScreenSizes) + (geometry->lods().size() - 1));
-  a.geometry = std::move(geometry);
+  LodChain chain = build_lods(g.mesh);
+  a.lod_screen_sizes = std::move(chain.screen_sizes);
+  a.geometry = std::make_shared<const AssetGeometry>(std::move(chain.lods));
   a.proxy = g.proxy;
   return a;
 }
@@ -90,7 +90,7 @@ Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role r
   a.kind = factory.kind;
   a.role = role;
   a.geometry = std::make_shared<const AssetGeometry>(
-      [&factory, seed, variant] { return build_lods(generate_variant(factory, seed, variant).mesh); });
+      [&factory, seed, variant] { return build_lods(generate_variant(factory, seed, variant).mesh).lods; });
   a.lod_screen_sizes = std::move(lod_screen_sizes);
   a.proxy = proxy;
   return a;

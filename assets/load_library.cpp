@@ -40,9 +40,12 @@ Asset file_entry(const ManifestEntry& e, const std::filesystem::path& folder, co
   a.role = e.role;
   a.proxy = e.proxy;
   std::vector<Mesh> lods = import_asset_lods(folder / e.file, e.parts, e.z_up, where);
-  if (lods.size() == 1 && !e.lod_screen_sizes.empty())
-    lods = build_lods(lods[0], std::span(kLodRatios).first(std::min(e.lod_screen_sizes.size(), std::size(kLodRatios))));
   a.lod_screen_sizes = e.lod_screen_sizes;
+  if (lods.size() == 1 && !e.lod_screen_sizes.empty()) {
+    LodChain chain = build_lods(lods[0], e.lod_screen_sizes);
+    lods = std::move(chain.lods);
+    a.lod_screen_sizes = std::move(chain.screen_sizes);
+  }
   a.lod_screen_sizes.resize(std::min(a.lod_screen_sizes.size(), lods.size() - 1));
   lods.resize(a.lod_screen_sizes.size() + 1);
   a.geometry = std::make_shared<const AssetGeometry>(std::move(lods));

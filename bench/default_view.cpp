@@ -53,7 +53,8 @@ DefaultView::DefaultView() : library(std::make_unique<assets::AssetLibrary>(asse
   const size_t yaws = cfg.captures.autopilot_yaws.size();
   camera = poses[(poses.size() / yaws / 2) * yaws + yaws / 2].camera;
   world::ChunkCache cache(256);
-  frame = systems::SceneBuilder(*library).build(cache.require(ctx, world::chunks_in_view(camera, ctx.chunk_size())));
+  frame = systems::SceneBuilder(*library).build(cache.require(ctx, world::chunks_in_view(camera, ctx.chunk_size())),
+                                                camera.position(), cfg.render.ground_cover_distance);
   render::Renderer renderer;
   renderer.render_visibility(frame.scene, camera, render::RenderOptions{});
   drawn = freeze_lods(frame.scene, renderer.instance_lods(), drawn_from);

@@ -29,6 +29,8 @@ struct CapturesConfig {
   std::vector<double> autopilot_yaws = {-45, 0, 45};  ///< captures.autopilot_yaws (degrees)
   bool aerial = false;                             ///< captures.aerial
   std::string poses_file;                          ///< captures.poses_file ("" = none)
+  double clearance = 1.0;                          ///< captures.clearance (m)
+  double aerial_crown_clearance = 2.0;             ///< captures.aerial_crown_clearance (m)
 };
 
 /// Camera model and post (`[camera]`).
@@ -78,6 +80,7 @@ struct WorldConfig {
 /// Renderer switches (`[render]`).
 struct RenderConfig {
   bool lod = true;  ///< render.lod
+  double ground_cover_distance = 40;  ///< render.ground_cover_distance (m)
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

@@ -7,25 +7,31 @@
 #include "components/camera.hpp"
 #include "components/phase.hpp"
 #include "components/chunk.hpp"
+#include "components/world_source.hpp"
 #include "core/rng.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/collision_proxy.hpp"
+#include "world/plan_captures.hpp"
 #include "world/terrain_lod.hpp"
 
 namespace silva::systems {
 
 SceneBuilder::SceneBuilder(const assets::AssetLibrary& library)
-    : library_(&library), asset_meshes_(std::make_shared<std::vector<render::MeshLods>>(library.assets.size())) {}
+    : library_(&library), asset_meshes_(std::make_shared<std::vector<render::MeshLods>>(library.assets.size())) {
+  for (const assets::Asset& a : library.assets)
+    ground_cover_.push_back(a.kind == AssetKind::Grass || a.kind == AssetKind::Fern || a.kind == AssetKind::GroundCover);
+}
 
-void SceneBuilder::make_drawable(const std::vector<std::shared_ptr<const ChunkContent>>& chunks) const {
+void SceneBuilder::make_drawable(const std::vector<render::Instance>& instances, size_t first) const {
   std::vector<uint32_t> missing;
   std::vector<bool> seen(asset_meshes_->size(), false);
-  for (const auto& c : chunks)
-    for (const Vegetation& v : c->objects)
-      if (!seen[v.asset] && (*asset_meshes_)[v.asset].lods.empty()) {
-        seen[v.asset] = true;
-        missing.push_back(v.asset);
-      }
+  for (size_t i = first; i < instances.size(); ++i) {
+    const uint32_t asset = instances[i].mesh;
+    if (asset < seen.size() && !seen[asset] && (*asset_meshes_)[asset].lods.empty()) {
+      seen[asset] = true;
+      missing.push_back(asset);
+    }
+  }
   // Each variant's meshes are a pure function of its source, so making them in parallel is safe.
   tbb::parallel_for(size_t(0), missing.size(), [&](size_t k) {
     const assets::Asset& a = library_->assets[missing[k]];
@@ -44,11 +50,15 @@ uint32_t variation_seed(const Vec3f& position) {
   return uint32_t(hash_combine(hash_combine(bits[0], bits[1]), bits[2]));
 }
 
-FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const {
+double ground_cover_cutoff(uint32_t variation, double ground_cover_distance) {
+  return ground_cover_distance * (0.75 + 0.25 * double(variation) / 4294967296.0);
+}
+
+FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
+                               double ground_cover_distance) const {
   FrameScene out;
   render::Scene& scene = out.scene;
-  make_drawable(chunks);
-  scene.meshes = *asset_meshes_;
+  scene.meshes.resize(asset_meshes_->size());  // filled below, once the drawn assets are known
   size_t objects = 0;
   for (const auto& c : chunks) objects += c->objects.size();
   scene.instances.reserve(objects + 2 * chunks.size());
@@ -67,17 +77,25 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
     inst.mesh = uint32_t(scene.meshes.size() - 1);
     scene.instances.push_back(inst);
   };
+  std::vector<render::Instance> objects_drawn;
+  objects_drawn.reserve(objects);
   for (const auto& c : chunks) {
     add_world_mesh(c->terrain, &c->terrain_lod, c->terrain_bounds);
     for (const Vegetation& v : c->objects) {
       render::Instance inst;
+      inst.variation = variation_seed(v.position);
+      if (ground_cover_[v.asset] != 0 &&
+          (v.position.cast<double>() - eye).norm() > ground_cover_cutoff(inst.variation, ground_cover_distance))
+        continue;
       inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);
       inst.mesh = v.asset;
       inst.instance_id = v.instance_id;
-      inst.variation = variation_seed(v.position);
-      scene.instances.push_back(inst);
+      objects_drawn.push_back(inst);
     }
   }
+  make_drawable(objects_drawn, 0);
+  std::copy(asset_meshes_->begin(), asset_meshes_->end(), scene.meshes.begin());
+  scene.instances.insert(scene.instances.end(), objects_drawn.begin(), objects_drawn.end());
   out.chunks = std::move(chunks);
   return out;
 }
@@ -86,12 +104,16 @@ void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& librar
   world.set_resource(PreparedScene{});
   world.system("prepare_scene")
       .phase(Phase::Prepare)
-      .reads_resource<CaptureQueue, ViewChunks>()
+      .reads_resource<WorldSource, CaptureQueue, ViewChunks>()
       .writes_resource<world::ChunkCache, PreparedScene>()
+      .reads<world::PlannedFrame>()
       .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
-        if (sys.resource<const CaptureQueue>().active.is_null()) return;
+        const ecs::Entity camera = sys.resource<const CaptureQueue>().active;
+        if (camera.is_null()) return;
         const auto& coords = sys.resource<const ViewChunks>().coords;
-        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords));
+        const Vec3d eye = sys.get<const world::PlannedFrame>(camera).camera.position();
+        const double distance = sys.resource<const WorldSource>().ctx->config.render.ground_cover_distance;
+        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords), eye, distance);
       });
 }
 

@@ -24,20 +24,27 @@ class SceneBuilder {
  public:
   /// A builder for `library`'s assets (which must outlive it); no asset meshes are made yet.
   explicit SceneBuilder(const assets::AssetLibrary& library);
-  /// Scene of the given chunks: terrain (trail included) and every object of each, in chunk order.
-  /// Makes the meshes of assets drawn for the first time (in parallel); copies share them.
-  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks) const;
+  /// Scene of the given chunks seen from `eye`: terrain (trail included) and every object of each,
+  /// in chunk order, but ground cover (grass, ferns, debris) beyond its ground_cover_cutoff. Makes
+  /// the meshes of assets drawn for the first time (in parallel); copies of the builder share them.
+  FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
+                   double ground_cover_distance) const;
 
  private:
-  /// Fills the drawable meshes of every asset `chunks` place that has none yet.
-  void make_drawable(const std::vector<std::shared_ptr<const ChunkContent>>& chunks) const;
+  /// Fills the drawable meshes of the assets instances[first..] draw that have none yet.
+  void make_drawable(const std::vector<render::Instance>& instances, size_t first) const;
 
   const assets::AssetLibrary* library_;
   std::shared_ptr<std::vector<render::MeshLods>> asset_meshes_;  ///< Per asset; empty until first drawn.
+  std::vector<uint8_t> ground_cover_;  ///< Per asset: 1 for grass, ferns and ground-cover debris.
 };
 
 /// Per-instance colour-variation seed derived from an object's position (stable across runs).
 uint32_t variation_seed(const Vec3f& position);
+
+/// Distance from the camera beyond which the ground-cover object with variation seed `variation`
+/// is not drawn: between 75 % and 100 % of render.ground_cover_distance (no visible line).
+double ground_cover_cutoff(uint32_t variation, double ground_cover_distance);
 
 /// Resource: the scene the Render phase draws for the active camera (left as it was without one).
 struct PreparedScene {

@@ -1,15 +1,12 @@
 #include "world/plan_captures.hpp"
 
-#include <fcl/geometry/shape/cylinder.h>
-#include <fcl/geometry/shape/sphere.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "world/chunk_regions.hpp"
-#include "world/collision_proxy.hpp"
+#include "world/pose_clearance.hpp"
 #include "world/terrain.hpp"
 
 namespace silva::world {
@@ -46,76 +43,139 @@ double wrap_degrees(double a) {
   if (a <= -180.0) a += 360.0;
   return a;
 }
+
+/// The autopilot frame for point i, yaw k, at arc length s.
+PlannedFrame autopilot_frame(const WorldContext& ctx, int i, size_t k, double s) {
+  const Config& c = ctx.config;
+  const auto [height, pitch] = height_and_pitch(c);
+  const auto& yaws = c.captures.autopilot_yaws;
+  const Vec3d p = ctx.trail.nav.position(s);
+  const Vec3d t = ctx.trail.nav.tangent(s);
+  const double heading = std::atan2(t.y(), t.x()) * kDegPerRad;
+  const double ground = terrain_height(ctx.terrain, p.x(), p.y());
+  PlannedFrame f = make_frame(ctx, "autopilot", int(i * yaws.size() + k), Vec3d(p.x(), p.y(), ground + height),
+                              wrap_degrees(heading + yaws[k]), pitch, 0.0, c.captures.aerial);
+  f.trail_s = s;
+  return f;
+}
+
+/// Offsets of the spiral around a random draw: ring by ring outwards, the draw itself first.
+const std::vector<Eigen::Vector2d>& spiral_offsets() {
+  static const std::vector<Eigen::Vector2d> offsets = [] {
+    std::vector<Eigen::Vector2d> out = {Eigen::Vector2d::Zero()};
+    for (int ring = 1; ring <= kSpiralRings; ++ring)
+      for (int j = 0; j < 8 * ring; ++j) {
+        const double a = 2.0 * 3.14159265358979323846 * double(j) / double(8 * ring);
+        out.emplace_back(double(ring) * kPoseSearchStep * std::cos(a), double(ring) * kPoseSearchStep * std::sin(a));
+      }
+    return out;
+  }();
+  return offsets;
+}
+
+/// The first clear spot of the spiral around (x, y) inside the capture region on walkable
+/// ground, as an offset index, or -1.
+int clear_spiral_spot(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, double x,
+                      double y, double height) {
+  const double radius = kSpiralRings * kPoseSearchStep, half = 0.5 * ctx.config.world.extent;
+  const auto chunks = cache.require(ctx, chunks_in_disc(x, y, ClearanceProbe::reach(ctx, radius), ctx.chunk_size()));
+  const ClearanceProbe probe(ctx, crowns, chunks, x, y, radius);
+  const auto& offsets = spiral_offsets();
+  for (size_t k = 0; k < offsets.size(); ++k) {
+    const double cx = x + offsets[k].x(), cy = y + offsets[k].y();
+    if (std::abs(cx) > half || std::abs(cy) > half || !walkable(ctx, cx, cy)) continue;
+    if (probe.clear(Vec3d(cx, cy, terrain_height(ctx.terrain, cx, cy) + height), ctx.config.captures.aerial))
+      return int(k);
+  }
+  return -1;
+}
 }  // namespace
+
+bool walkable(const WorldContext& ctx, double x, double y) {
+  const Vec3f n = terrain_normal(ctx.terrain, x, y);
+  return std::acos(std::clamp(double(n.z()), -1.0, 1.0)) * kDegPerRad <= kMaxWalkableSlopeDeg;
+}
 
 std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx) {
   std::vector<PlannedFrame> frames;
   if (!ctx.trail.enabled) return frames;
-  const Config& c = ctx.config;
-  const auto [height, pitch] = height_and_pitch(c);
-  const int n = c.captures.autopilot_points;
+  const int n = ctx.config.captures.autopilot_points;
   const double length = ctx.trail.nav.length();
-  const auto& yaws = c.captures.autopilot_yaws;
   for (int i = 0; i < n; ++i) {
     const double s = n == 1 ? 0.0 : double(i) * length / double(n - 1);
-    const Vec3d p = ctx.trail.nav.position(s);
-    const Vec3d t = ctx.trail.nav.tangent(s);
-    const double heading = std::atan2(t.y(), t.x()) * kDegPerRad;
-    const double ground = terrain_height(ctx.terrain, p.x(), p.y());
-    for (size_t k = 0; k < yaws.size(); ++k) {
-      PlannedFrame f = make_frame(ctx, "autopilot", int(i * yaws.size() + k), Vec3d(p.x(), p.y(), ground + height),
-                                  wrap_degrees(heading + yaws[k]), pitch, 0.0, c.captures.aerial);
-      f.trail_s = s;
-      frames.push_back(std::move(f));
-    }
+    for (size_t k = 0; k < ctx.config.captures.autopilot_yaws.size(); ++k) frames.push_back(autopilot_frame(ctx, i, k, s));
   }
   return frames;
 }
 
-bool pose_is_clear(const WorldContext& ctx, const std::vector<std::shared_ptr<const ChunkContent>>& chunks,
-                   double x, double y, double height) {
-  const Vec3f n = terrain_normal(ctx.terrain, x, y);
-  if (std::acos(std::clamp(double(n.z()), -1.0, 1.0)) * kDegPerRad > kMaxWalkableSlopeDeg) return false;
-  const float ground = terrain_height(ctx.terrain, x, y);
-  // The camera's column: a cylinder of the clearance radius from the ground to its height.
-  const float column = float(std::max(height, 0.1));
-  PlacedProxy camera;
-  camera.geometry = std::make_shared<fcl::Cylinderf>(float(kPoseClearance), column);
-  camera.transform.translation() = fcl::Vector3f(float(x), float(y), ground + 0.5f * column);
-  const double reach = kPoseClearance + ctx.max_footprint;
-  for (const auto& chunk : chunks)
-    for (const Vegetation& v : chunk->objects) {
-      const auto& proxy = ctx.library->assets[v.asset].proxy;
-      if (proxy.shape == assets::CollisionProxy::Shape::None) continue;
-      if (std::hypot(v.position.x() - x, v.position.y() - y) > reach + proxy.footprint_radius() * v.scale) continue;
-      if (proxies_collide(camera, place_proxy(proxy, v.position, v.yaw, v.scale))) return false;
+void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames) {
+  const CrownProfiles crowns(*ctx.library);
+  const size_t yaws = ctx.config.captures.autopilot_yaws.size();
+  const double length = ctx.trail.nav.length();
+  const bool aerial = ctx.config.captures.aerial;
+  for (size_t first = 0; first + yaws <= frames.size(); first += yaws) {
+    const double s0 = *frames[first].trail_s;
+    const Vec3d eye = frames[first].camera.position();
+    const double here = ClearanceProbe::reach(ctx, 0.0);
+    if (ClearanceProbe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), here, ctx.chunk_size())), eye.x(),
+                       eye.y(), 0.0)
+            .clear(eye, aerial))
+      continue;
+    const double reach = ClearanceProbe::reach(ctx, kTrailSearchReach);
+    const ClearanceProbe probe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), reach, ctx.chunk_size())),
+                               eye.x(), eye.y(), kTrailSearchReach);
+    std::optional<double> found;
+    for (int step = 1; step <= int(kTrailSearchReach / kPoseSearchStep) && !found; ++step)
+      for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
+        if (s < 0.0 || s > length) continue;
+        const Vec3d p = ctx.trail.nav.position(s);
+        const double z = terrain_height(ctx.terrain, p.x(), p.y()) + height_and_pitch(ctx.config).first;
+        if (probe.clear(Vec3d(p.x(), p.y(), z), aerial)) {
+          found = s;
+          break;
+        }
+      }
+    for (size_t k = 0; k < yaws; ++k) {
+      PlannedFrame& f = frames[first + k];
+      if (found) f = autopilot_frame(ctx, f.frame / int(yaws), k, *found);
+      f.pose_fix = found ? PoseFix::Moved : PoseFix::Unresolvable;
     }
-  return true;
+  }
 }
 
 std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {
   const Config& c = ctx.config;
   const auto [height, pitch] = height_and_pitch(c);
   const double half = 0.5 * c.world.extent;
-  const double reach = kPoseClearance + ctx.max_footprint;
+  const CrownProfiles crowns(*ctx.library);
   std::vector<PlannedFrame> frames;
   for (int f = 0; f < c.captures.random_count; ++f) {
     Rng rng(uint64_t(c.seed), uint64_t(f), Purpose::RandomPose);
-    bool found = false;
-    for (int attempt = 0; attempt < kMaxPoseAttempts && !found; ++attempt) {
+    std::optional<Vec3d> first;  // x, y, yaw of the first walkable draw
+    int draws = 0;
+    for (int attempt = 0; attempt < kMaxPoseAttempts && draws < kMaxClearanceDraws; ++attempt) {
       const double x = rng.range(float(-half), float(half));
       const double y = rng.range(float(-half), float(half));
       const double yaw = rng.range(-180.0f, 180.0f);
-      const auto chunks = cache.require(ctx, chunks_in_disc(x, y, reach, ctx.chunk_size()));
-      if (!pose_is_clear(ctx, chunks, x, y, height)) continue;
-      const double ground = terrain_height(ctx.terrain, x, y);
-      frames.push_back(make_frame(ctx, "random", f, Vec3d(x, y, ground + height), yaw, pitch, 0.0, c.captures.aerial));
-      found = true;
+      if (!walkable(ctx, x, y)) continue;
+      if (!first) first = Vec3d(x, y, yaw);
+      ++draws;
+      const int spot = clear_spiral_spot(ctx, cache, crowns, x, y, height);
+      if (spot < 0) continue;
+      const double px = x + spiral_offsets()[size_t(spot)].x(), py = y + spiral_offsets()[size_t(spot)].y();
+      frames.push_back(make_frame(ctx, "random", f, Vec3d(px, py, terrain_height(ctx.terrain, px, py) + height), yaw,
+                                  pitch, 0.0, c.captures.aerial));
+      frames.back().pose_fix = draws == 1 && spot == 0 ? PoseFix::Clear : PoseFix::Moved;
+      break;
     }
-    if (!found)
-      throw InputError("captures.random_count: found no walkable pose clear of obstacles for random frame " +
-                       std::to_string(f) + " in " + std::to_string(kMaxPoseAttempts) +
-                       " tries; lower vegetation.density or enlarge world.extent");
+    if (int(frames.size()) == f + 1) continue;
+    if (!first)
+      throw InputError("captures.random_count: found no walkable pose for random frame " + std::to_string(f) + " in " +
+                       std::to_string(kMaxPoseAttempts) + " tries; enlarge world.extent or lower terrain.max_elevation");
+    const Vec3d p = *first;
+    frames.push_back(make_frame(ctx, "random", f, Vec3d(p.x(), p.y(), terrain_height(ctx.terrain, p.x(), p.y()) + height),
+                                p.z(), pitch, 0.0, c.captures.aerial));
+    frames.back().pose_fix = PoseFix::Unresolvable;
   }
   return frames;
 }
@@ -145,6 +205,7 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
         continue;
       }
       frames = plan_autopilot(ctx);
+      settle_autopilot(ctx, cache, frames);
     } else if (sequence == "random") {
       frames = plan_random(ctx, cache);
     } else if (sequence == "custom") {

@@ -13,6 +13,13 @@
 
 namespace silva::world {
 
+/// How a planned autopilot or random pose met the clearance rules (world/pose_clearance.hpp).
+enum class PoseFix : uint8_t {
+  Clear,         ///< Clear where it was planned (custom poses are never checked).
+  Moved,         ///< Moved by the search (autopilot: along the trail; random: a spiral around its draw).
+  Unresolvable,  ///< No clear pose within the search: kept where it was planned.
+};
+
 /// One planned capture.
 struct PlannedFrame {
   std::string sequence;           ///< "autopilot", "random" or "custom".
@@ -22,36 +29,50 @@ struct PlannedFrame {
   Camera camera;                  ///< Intrinsics, pose, near/far.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).
   std::optional<double> trail_s;  ///< Arc length along the trail (autopilot only).
+  PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
 };
 
 /// Steepest slope a random pose may stand on (CONTRACT.md), degrees.
 inline constexpr double kMaxWalkableSlopeDeg = 30.0;
-/// Smallest distance from a random pose to any solid proxy (CONTRACT.md), metres.
-inline constexpr double kPoseClearance = 0.5;
-/// Random pose attempts before a frame is declared impossible.
+/// Random pose draws before a frame is declared impossible (no walkable ground).
 inline constexpr int kMaxPoseAttempts = 10000;
+/// Walkable random draws searched around (a spiral each) before a random pose is unresolvable.
+inline constexpr int kMaxClearanceDraws = 16;
+/// Step (metres) of the clearance searches: along the trail, and between the spiral's rings.
+inline constexpr double kPoseSearchStep = 0.5;
+/// Farthest an autopilot pose moves along the trail (metres) to find clearance.
+inline constexpr double kTrailSearchReach = 20.0;
+/// Rings of the spiral around a random draw (radius kSpiralRings * kPoseSearchStep).
+inline constexpr int kSpiralRings = 8;
 
 /// Autopilot: n points evenly spaced by arc length over the whole nav spline, both ends
 /// included, one frame per (point, yaw); frame = i * yaws + k. Empty when the trail is off.
+/// The trail's own poses, before settle_autopilot.
 std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx);
 
-/// Random: captures.random_count poses in the capture region on walkable ground, clear of every
-/// solid proxy, yaw uniform; frame f draws from the RNG keyed on (seed, f). Uses `cache` for
-/// the chunks around each candidate. Throws InputError if no valid pose is found for a frame.
+/// Moves each autopilot point that is not clear (pose_clearance.hpp) to the nearest clear arc
+/// length within kTrailSearchReach (tried in steps of kPoseSearchStep, ahead first), keeping
+/// its yaws relative to the trail; marks the frames Moved or Unresolvable (left in place).
+void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames);
+
+/// Random: captures.random_count poses in the capture region on walkable ground, yaw uniform;
+/// frame f draws from the RNG keyed on (seed, f) until a walkable spot, then takes the first
+/// clear spot of a spiral around it (the draw itself first; Moved when not the draw), drawing
+/// again up to kMaxClearanceDraws times; if none is clear, the first walkable draw is kept as
+/// Unresolvable. Uses `cache` for the chunks around each draw. Throws InputError if no
+/// walkable spot is found in kMaxPoseAttempts draws.
 std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache);
 
 /// Custom: one frame per pose of the pose file, in file order (z omitted: ground height above terrain).
 std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector<PoseEntry>& poses);
 
-/// Every frame of the run: the sequences of captures.sequences in order, global indices assigned.
+/// Every frame of the run (autopilot settled): the sequences of captures.sequences in order, global indices assigned.
 /// Autopilot is skipped with a warning (via `warn`) when the trail is off; InputError if nothing is left.
 std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cache,
                                         const std::vector<PoseEntry>& custom_poses,
                                         const std::function<void(const std::string&)>& warn);
 
-/// True when a camera standing at (x, y) keeps kPoseClearance from every solid proxy of `chunks`
-/// up to `height` above the ground, and the terrain slope there is walkable.
-bool pose_is_clear(const WorldContext& ctx, const std::vector<std::shared_ptr<const ChunkContent>>& chunks,
-                   double x, double y, double height);
+/// True when the terrain slope at (x, y) is at most kMaxWalkableSlopeDeg.
+bool walkable(const WorldContext& ctx, double x, double y);
 
 }  // namespace silva::world

@@ -118,6 +118,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   progress.finish();
 
   nlohmann::json record = make_run_record(stats, request.threads, skipped, plan_s);
+  record["poses"] = count_pose_fixes(plan);
   const nlohmann::json manifest = make_manifest(loaded, setup, count_frames(plan));
   if (stats.stopped) {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");

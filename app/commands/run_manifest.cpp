@@ -48,6 +48,17 @@ nlohmann::json pixel_shares(const systems::CaptureStats& s) {
 }
 }  // namespace
 
+nlohmann::json count_pose_fixes(const std::vector<world::PlannedFrame>& frames) {
+  int checked = 0, moved = 0, unresolvable = 0;
+  for (const world::PlannedFrame& f : frames) {
+    if (f.sequence == "custom") continue;
+    ++checked;
+    moved += f.pose_fix == world::PoseFix::Moved ? 1 : 0;
+    unresolvable += f.pose_fix == world::PoseFix::Unresolvable ? 1 : 0;
+  }
+  return {{"checked", checked}, {"moved", moved}, {"unresolvable", unresolvable}};
+}
+
 nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int skipped, double plan_s) {
   char host[256] = {};
   gethostname(host, sizeof host - 1);

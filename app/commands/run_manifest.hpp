@@ -18,6 +18,10 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
 /// Frames per sequence of a plan.
 std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& frames);
 
+/// Clearance counts of a plan for run.json: {"checked", "moved", "unresolvable"} over its
+/// autopilot and random poses (world::PoseFix; custom poses are not checked).
+nlohmann::json count_pose_fixes(const std::vector<world::PlannedFrame>& frames);
+
 /// run.json: timings per phase, counts, thread count, host, date, git revision.
 nlohmann::json make_run_record(const systems::CaptureStats& stats, int threads, int skipped, double plan_s);
 

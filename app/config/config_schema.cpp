@@ -46,6 +46,13 @@ std::vector<ConfigKey> build_schema() {
        [](Config& c) -> FieldRef { return &c.captures.autopilot_yaws; }},
       {"captures.aerial", T::Bool, "aerial perspective for autopilot and random poses", {}, {},
        [](Config& c) -> FieldRef { return &c.captures.aerial; }},
+      {"captures.clearance", T::Float,
+       "autopilot and random cameras keep this from every solid collision proxy, metres (poses that "
+       "do not are moved)",
+       between(0, 10), {}, [](Config& c) -> FieldRef { return &c.captures.clearance; }},
+      {"captures.aerial_crown_clearance", T::Float,
+       "aerial autopilot and random cameras keep this from every tree crown, metres",
+       between(0, 20), {}, [](Config& c) -> FieldRef { return &c.captures.aerial_crown_clearance; }},
       {"captures.poses_file", T::String, "JSON or CSV pose file of the custom sequence (\"\" = none)",
        {}, {}, [](Config& c) -> FieldRef { return &c.captures.poses_file; }},
       {"camera.fov_deg", T::Float, "horizontal field of view, degrees", between(10, 170), {},
@@ -101,6 +108,10 @@ std::vector<ConfigKey> build_schema() {
        above(0, 1e5), {}, [](Config& c) -> FieldRef { return &c.world.render_distance; }},
       {"render.lod", T::Bool, "level of detail by screen size; false = full detail everywhere", {},
        {}, [](Config& c) -> FieldRef { return &c.render.lod; }},
+      {"render.ground_cover_distance", T::Float,
+       "grass and ferns farther from the camera are not drawn (ground shows, labels follow), in every "
+       "LOD mode, metres",
+       above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.render.ground_cover_distance; }},
   };
 }
 

@@ -19,10 +19,11 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "vegetation.grid_spacing", "vegetation.ground", "terrain.max_elevation", "terrain.octaves",
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
-        "trail.control_spacing", "world.extent", "world.render_distance", "render.lod"}) {
+        "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
+        "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 36u);
+  EXPECT_EQ(names.size(), 39u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

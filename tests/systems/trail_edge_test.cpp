@@ -30,7 +30,8 @@ render::GBuffer trail_view(const world::WorldContext& ctx, double s, double heig
       world::add_terrain(ctx, *c);
       chunks.push_back(std::move(c));
     }
-  const systems::FrameScene frame = systems::SceneBuilder(test::small_library()).build(std::move(chunks));
+  const systems::FrameScene frame =
+      systems::SceneBuilder(test::small_library()).build(std::move(chunks), p + Vec3d(0, 0, height), 40.0);
   Camera cam = Camera::from_fov(320, 320, 60, 0.05, 100);
   const Vec3d t = ctx.trail.nav.tangent(s);
   const double yaw = std::atan2(t.y(), t.x()) * 180.0 / 3.14159265358979323846;

@@ -118,7 +118,7 @@ TEST(PlanCaptures, TrailOffSkipsAutopilotWithAWarning) {
 }
 
 // Random poses: inside the capture region, camera_height above the terrain, on walkable
-// slopes, and at least kPoseClearance from every solid proxy of the placed world (checked
+// slopes, and at least captures.clearance from every solid proxy of the placed world (checked
 // against freshly generated chunks, with analytic distances), for several seeds and a dense forest.
 TEST(PlanCaptures, RandomPosesClearOfEveryProxyAndAboveTheTerrain) {
   for (int64_t seed : {1, 7, 99, 123456}) {
@@ -130,6 +130,7 @@ TEST(PlanCaptures, RandomPosesClearOfEveryProxyAndAboveTheTerrain) {
     ASSERT_EQ(frames.size(), 40u);
     int near_misses = 0;
     for (const auto& f : frames) {
+      if (f.pose_fix == PoseFix::Unresolvable) continue;  // counted in run.json, kept where drawn
       const Vec3d p = f.camera.position();
       SCOPED_TRACE("seed " + std::to_string(seed) + " frame " + std::to_string(f.frame));
       EXPECT_LE(std::abs(p.x()), 0.5 * cfg.world.extent);
@@ -151,8 +152,8 @@ TEST(PlanCaptures, RandomPosesClearOfEveryProxyAndAboveTheTerrain) {
             nearest = std::min(nearest, proxy_distance(proxy, v, Vec3d(p.x(), p.y(), ground + h)));
         }
       }
-      EXPECT_GE(nearest, kPoseClearance - 1e-3);
-      near_misses += nearest < 2.0;
+      EXPECT_GE(nearest, cfg.captures.clearance - 1e-3);
+      near_misses += nearest < 2.5;
     }
     EXPECT_GT(near_misses, 0) << "a dense forest should bring some poses close to an obstacle";
   }
