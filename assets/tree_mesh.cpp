@@ -47,8 +47,8 @@ float card_from(const Branch& br, const FoliageParams& f) {
 
 /// One card on a twig at point p with twig direction d.
 void add_twig_card(MeshBuilder& b, const Skeleton& s, const FoliageParams& f, Rng& rng, const Vec3f& p,
-                   const Vec3f& d) {
-  const float h = f.half * rng.range(0.8f, 1.2f);
+                   const Vec3f& d, float enlarge) {
+  const float h = f.half * enlarge * rng.range(0.8f, 1.2f);
   Vec3f centre, right, up;
   if (f.style == CardStyle::Spray) {
     up = (d - f.droop * Vec3f::UnitZ()).normalized();
@@ -113,6 +113,8 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
   // Card counts per branch are rounded stochastically (unbiased): 100 cards of slack cover that.
   const int budget = std::min(f.max_cards, (kTreeTriangleBudget - tube_triangles) / 2 - 100);
   const float spacing = std::max(f.spacing, total / float(std::max(1, budget)));
+  // Fewer cards than the species' spacing asks for: each grows so the crown keeps its cover.
+  const float enlarge = std::min(2.0f, std::sqrt(spacing / f.spacing));
   b.begin_part(f.role, f.material, f.mask, true);
   for (const Branch& br : s.branches) {
     const float from = card_from(br, f);
@@ -123,7 +125,7 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
       const float t = from + (1.0f - from) * (float(k) + rng.range(0.2f, 0.8f)) / float(cards);
       const float dt = 0.5f / float(br.nodes.size());
       const Vec3f d = point_along(br, std::min(1.0f, t + dt)).p - point_along(br, std::max(0.0f, t - dt)).p;
-      add_twig_card(b, s, f, rng, point_along(br, t).p, d.normalized());
+      add_twig_card(b, s, f, rng, point_along(br, t).p, d.normalized(), enlarge);
     }
   }
 }

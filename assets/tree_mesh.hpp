@@ -13,7 +13,7 @@ namespace silva::assets {
 inline constexpr float kMinTubeRadius = 0.015f;
 
 /// Most triangles of one tree's full-detail mesh: cards are thinned to stay within it.
-inline constexpr int kTreeTriangleBudget = 9000;
+inline constexpr int kTreeTriangleBudget = 3000;
 
 /// How cards sit on a twig.
 enum class CardStyle : uint8_t {

@@ -23,8 +23,8 @@ Vec3f material_albedo(const SurfacePoint& s);
 /// Forest floor (Material::Ground): leaf and needle litter with grassy and mossy patches and a
 /// little bare soil, blended by noise and slope; leaf-sized detail fades out where one pixel
 /// covers more than a few centimetres. Linear-RGB colours of the layers:
-inline constexpr float kGroundLeafLitter[3] = {0.11f, 0.072f, 0.042f};   ///< Brown leaf litter.
-inline constexpr float kGroundDryLeaves[3] = {0.21f, 0.14f, 0.075f};      ///< Dry, lit leaves on top.
+inline constexpr float kGroundLeafLitter[3] = {0.095f, 0.066f, 0.042f};   ///< Brown leaf litter.
+inline constexpr float kGroundDryLeaves[3] = {0.16f, 0.115f, 0.07f};      ///< Dry, lit leaves on top.
 inline constexpr float kGroundNeedleLitter[3] = {0.095f, 0.062f, 0.04f};   ///< Spruce/pine needle litter.
 inline constexpr float kGroundGrass[3] = {0.075f, 0.092f, 0.032f};          ///< Short grass cover.
 inline constexpr float kGroundMoss[3] = {0.06f, 0.085f, 0.022f};          ///< Moss carpets.

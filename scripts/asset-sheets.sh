@@ -17,6 +17,6 @@ sheet() {  # sheet NAME KINDS...
     --out "$ROOT/docs/assets/$name.png"
 }
 sheet trees conifer_tree broadleaf_tree
-sheet dead-wood dead_tree stump log
+sheet dead-wood dead_tree log stump
 sheet understory grass fern shrub
-sheet rocks rock
+sheet ground-cover ground_cover rock

@@ -20,8 +20,11 @@ struct PointDraws {
   Rng stream(Purpose p, uint32_t sub) const { return Rng(seed, key, p, uint64_t(sub) * 8); }
 };
 
-/// Most ground points hold 1..3 grass/fern tufts; ferns grow more under denser canopy.
-constexpr uint32_t kMaxGroundPerPoint = 3;
+/// Ground points hold kMinTufts..kMinTufts+kTuftRange-1 grass/fern tufts (ferns grow more under
+/// denser canopy) and 0..kMaxDebris-1 pieces of ground-cover debris (twigs, cones, litter, moss).
+constexpr uint32_t kMinTufts = 3;
+constexpr uint32_t kTuftRange = 4;
+constexpr uint32_t kMaxDebris = 3;
 
 }  // namespace
 
@@ -40,7 +43,7 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
   const int n = int(std::lround(s / gs));
   const double radius = kAdmissibleFraction * gs;
   const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground);
-  const double fern_share = 0.2 + 2.0 * cfg.vegetation.density / 100.0;
+  const double fern_share = 0.35 + 2.0 * cfg.vegetation.density / 100.0;
   const double x0 = coord.i * s, y0 = coord.j * s;
   const double pad = ctx.trail.corridor_half_width() + std::max<double>(ctx.max_footprint, kGroundFootprint * kMaxScale);
   const auto trail_segments = trail_segments_near(ctx.trail, x0, y0, x0 + s, y0 + s, pad);
@@ -87,9 +90,11 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
       }
       if (!with_ground) continue;
       Rng cover = d.stream(Purpose::GroundCover, 0);
-      const uint32_t count = 1 + cover.below(kMaxGroundPerPoint);
-      for (uint32_t sub = 0; sub < count; ++sub)
+      const uint32_t tufts = kMinTufts + cover.below(kTuftRange);
+      for (uint32_t sub = 0; sub < tufts; ++sub)
         propose(cover.uniform_double() < fern_share ? AssetKind::Fern : AssetKind::Grass, d, point, sub, cx, cy);
+      const uint32_t debris = cover.below(kMaxDebris);
+      for (uint32_t sub = tufts; sub < tufts + debris; ++sub) propose(AssetKind::GroundCover, d, point, sub, cx, cy);
     }
   }
   return out;
