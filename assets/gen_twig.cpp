@@ -42,7 +42,7 @@ GeneratedAsset stick(Rng& rng, float len, float r, int side_twigs) {
   const StemNodes main = sticks.front();
   add_side_twigs(sticks, rng, main, len, 0.5f * r, side_twigs);
   MeshBuilder b;
-  add_stems(b, sticks, Role::Ground, Material::BarkBroadleaf);
+  add_stems(b, sticks, Role::Ground, Material::LogBark);
   return {b.finish(), Role::Ground, CollisionProxy{}};
 }
 

@@ -2,24 +2,12 @@
 
 #include <algorithm>
 
+#include "render/noise_salts.hpp"
 #include "render/shading_noise.hpp"
 
 namespace silva::render {
 
 namespace {
-
-/// Noise salts of these materials (distinct from render/materials.cpp's).
-enum Salt : uint32_t {
-  kRockGrain = 0x900,
-  kRockMoss = 0x901,
-  kRockLichen = 0xb00,
-  kRockBand = 0xb01,
-  kLogFurrow = 0xb10,
-  kLogMoss = 0xb11,
-  kBrokenGrain = 0xb20,
-  kMossMottle = 0xb30,
-  kLitterTone = 0xb40,
-};
 
 float step(float e0, float e1, float x) { return smooth_weight(std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f)); }
 

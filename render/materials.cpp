@@ -11,14 +11,6 @@ namespace silva::render {
 
 namespace {
 
-/// Noise salts: one per independent pattern so patterns never repeat each other.
-enum Salt : uint32_t {
-  kBarkStreak = 0x600,
-  kBarkLichen = 0x700,
-  kFoliage = 0x800,
-  kWood = 0xa00,
-};
-
 float smoothstep(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return smooth_weight(t);

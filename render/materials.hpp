@@ -5,6 +5,7 @@
 
 #include "core/material.hpp"
 #include "core/types.hpp"
+#include "render/noise_salts.hpp"
 
 namespace silva::render {
 
@@ -29,14 +30,9 @@ inline constexpr float kGroundNeedleLitter[3] = {0.095f, 0.062f, 0.04f};   ///< 
 inline constexpr float kGroundGrass[3] = {0.075f, 0.092f, 0.032f};          ///< Short grass cover.
 inline constexpr float kGroundMoss[3] = {0.06f, 0.085f, 0.022f};          ///< Moss carpets.
 inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< Bare soil.
-/// Salts of the fBm layers (scale in 1/m, octaves): stand 0.02 x2 (leaf vs needle litter),
-/// grass 0.06 x2, moss 0.15 x3, soil 0.5 x3, fine grain 4 x2; leaf detail value noise at 9 and 23.
-inline constexpr uint32_t kGroundStandSalt = 0x100;
-inline constexpr uint32_t kGroundGrassSalt = 0x140;   ///< Grassy openings.
-inline constexpr uint32_t kGroundMossSalt = 0x180;    ///< Moss carpets.
-inline constexpr uint32_t kGroundSoilSalt = 0x200;    ///< Bare-soil patches.
-inline constexpr uint32_t kGroundFineSalt = 0x300;    ///< Brightness grain.
-inline constexpr uint32_t kGroundLeafSalt = 0x340;    ///< Leaf-sized blotches.
+/// The fBm layers (scale in 1/m, octaves; salts in render/noise_salts.hpp): stand 0.02 x2 (leaf
+/// vs needle litter), grass 0.06 x2, moss 0.15 x3, soil 0.5 x3, fine grain 4 x2; leaf detail value
+/// noise at 9 and 23.
 
 /// Ground albedo of `count` points (world positions, normals, and the metres one pixel covers
 /// there) into out[i], one point per SIMD lane; `soil` (may be null) receives each point's

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 
+#include "render/noise_salts.hpp"
 #include "render/shading_noise.hpp"
 
 namespace silva::render {
 
 namespace {
 /// Noise salt of the ragged edge.
-constexpr uint32_t kRaggedSalt = 0xb00;
 }  // namespace
 
 float overlay_edge(float uv_x, const Vec3f& position) {
-  const float n = fbm2(position.x() * 1.3f, position.y() * 1.3f, 3, kRaggedSalt);
+  const float n = fbm2(position.x() * 1.3f, position.y() * 1.3f, 3, kTrailRaggedEdge);
   return uv_x + kOverlayRagged * (2.0f * n - 1.0f);
 }
 

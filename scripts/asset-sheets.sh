@@ -13,7 +13,7 @@ sheet() {  # sheet NAME KINDS...
   shift
   local kinds
   kinds="$(IFS=,; echo "$*")"
-  "$SILVA" assets sheet --kind "$kinds" --count "$COUNT" --columns "$COUNT" --cell 256 \
+  "$SILVA" assets sheet --kind "$kinds" --count "$COUNT" --columns "$COUNT" --cell 200 \
     --out "$ROOT/docs/assets/$name.png"
 }
 sheet trees conifer_tree broadleaf_tree

@@ -86,6 +86,11 @@ BuiltWorld summarise_world(std::vector<ChunkContent> chunks) {
   std::sort(w.chunks.begin(), w.chunks.end(),
             [](const ChunkContent& a, const ChunkContent& b) { return a.coord < b.coord; });
   for (const ChunkContent& c : w.chunks) accumulate(w.totals, c.stats);
+  std::vector<uint32_t> assets;
+  for (const ChunkContent& c : w.chunks)
+    for (const Vegetation& v : c.objects) assets.push_back(v.asset);
+  std::sort(assets.begin(), assets.end());
+  w.totals.distinct_assets = uint64_t(std::unique(assets.begin(), assets.end()) - assets.begin());
   w.hash = world_hash(w.chunks);
   return w;
 }

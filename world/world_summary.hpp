@@ -15,6 +15,7 @@ struct WorldTotals {
   uint64_t triangles = 0;                               ///< Terrain triangles (the trail is part of the terrain).
   std::array<uint64_t, kRoleCount> objects_by_role{};   ///< Final objects per class (role).
   uint64_t objects = 0;                                 ///< All final objects.
+  uint64_t distinct_assets = 0;                         ///< Different asset variants the objects use.
   uint64_t candidates = 0;                              ///< Placement proposals in the built chunks.
   uint64_t trail_rejected = 0;                          ///< Proposals rejected on the trail corridor.
   uint64_t adjusted = 0;                                ///< Solids moved (adjusted placement).

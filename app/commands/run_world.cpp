@@ -31,6 +31,7 @@ nlohmann::json totals_json(const world::BuiltWorld& w, const Ontology& ontology)
           {"triangles", t.triangles},
           {"objects", t.objects},
           {"objects_per_class", per_class},
+          {"distinct_assets", t.distinct_assets},
           {"candidates", t.candidates},
           {"trail_rejected", t.trail_rejected},
           {"adjusted", t.adjusted},

@@ -77,7 +77,8 @@ TEST(ProfilePlacement, PerHectareTimesAreaIsTheCountAndCoverIsAPercentage) {
   uint64_t heat = 0;
   for (uint32_t h : p.profile.heat) heat += h;
   const auto& c = p.profile.classes;
-  EXPECT_EQ(heat, p.profile.objects - c[size_t(Role::GroundVegetation)].placed) << "every thing in one heatmap cell";
+  EXPECT_EQ(heat, p.profile.objects - c[size_t(Role::GroundVegetation)].placed - c[size_t(Role::Ground)].placed)
+      << "every thing in one heatmap cell (ground vegetation and ground-cover debris are stuff)";
 }
 
 TEST(ProfilePlacement, TreesPerHectareAndCanopyGrowWithDensity) {

@@ -20,12 +20,12 @@ struct SizeRange {
 };
 SizeRange expected_size(const Factory& f) {
   const std::string name = f.prefix;
-  if (name == "spruce") return {0.8f, 34.0f, 14.0f, 0.03f, 0.8f, 12000};
-  if (name == "pine") return {0.8f, 34.0f, 17.0f, 0.03f, 0.8f, 12000};
-  if (name == "larch") return {0.8f, 33.0f, 14.0f, 0.03f, 0.8f, 12000};
-  if (name == "beech") return {0.8f, 34.0f, 24.0f, 0.03f, 0.9f, 12000};
-  if (name == "birch") return {0.8f, 27.0f, 16.0f, 0.03f, 0.6f, 12000};
-  if (name == "oak") return {0.8f, 28.0f, 28.0f, 0.03f, 1.1f, 12000};
+  if (name == "spruce") return {0.8f, 34.0f, 16.0f, 0.03f, 0.8f, 12000};
+  if (name == "pine") return {0.8f, 34.0f, 19.0f, 0.03f, 0.8f, 12000};
+  if (name == "larch") return {0.8f, 33.0f, 16.0f, 0.03f, 0.8f, 12000};
+  if (name == "beech") return {0.8f, 34.0f, 26.0f, 0.03f, 0.9f, 12000};
+  if (name == "birch") return {0.8f, 27.0f, 18.0f, 0.03f, 0.6f, 12000};
+  if (name == "oak") return {0.8f, 28.0f, 30.0f, 0.03f, 1.1f, 12000};
   if (name == "dead_tree") return {2.5f, 20.5f, 12.0f, 0.18f, 0.75f};
   if (name == "fallen_tree") return {0.2f, 4.0f, 15.0f};
   switch (f.kind) {

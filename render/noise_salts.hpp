@@ -1,0 +1,47 @@
+#pragma once
+/// @file Every procedural-shading noise salt in one table, so that no two patterns share a noise
+/// stream. An fBm of n octaves uses salts salt .. salt + n - 1 and some patterns add small offsets,
+/// so salts are 0x20 apart. (Sky clouds and stars keep their own salts in render/sky.cpp.)
+#include <cstdint>
+
+namespace silva::render {
+
+/// Noise salts of the procedural materials.
+enum NoiseSalt : uint32_t {
+  // Forest floor (render/materials.hpp formula).
+  kGroundStandSalt = 0x100,  ///< Leaf vs needle litter stands.
+  kGroundGrassSalt = 0x120,  ///< Grassy openings.
+  kGroundMossSalt = 0x140,   ///< Moss carpets.
+  kGroundSoilSalt = 0x160,   ///< Bare-soil patches.
+  kGroundFineSalt = 0x180,   ///< Brightness grain.
+  kGroundLeafSalt = 0x1a0,   ///< Leaf-sized blotches (and + 1: speckle).
+  // Trail (render/trail_material.cpp, render/surface_overlay.cpp).
+  kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
+  kTrailStone = 0x420,       ///< Embedded stones.
+  kTrailRoot = 0x440,        ///< Roots crossing.
+  kTrailLitter = 0x460,      ///< Litter drifting in at the edges.
+  kTrailFringe = 0x480,      ///< Worn grassy fringe.
+  kTrailRaggedEdge = 0x4a0,  ///< Ragged edge of the overlay.
+  // Bark, foliage and wood (render/materials.cpp).
+  kBarkStreak = 0x600,       ///< Vertical bark streaks.
+  kBarkLichen = 0x620,       ///< Lichen on bark.
+  kFoliage = 0x640,          ///< Per-instance tint and mottling.
+  kWood = 0x660,             ///< Cut wood rings.
+  // Species barks (render/bark_materials.cpp).
+  kBarkFurrow = 0x700,       ///< Furrows.
+  kBarkPlate = 0x720,        ///< Plates and flakes.
+  kBarkMark = 0x740,         ///< Birch marks.
+  kBarkBlotch = 0x760,       ///< Blotches.
+  // Rocks, logs, moss and litter (render/ground_object_materials.cpp).
+  kRockGrain = 0x900,        ///< Rock grain.
+  kRockMoss = 0x920,         ///< Moss on rocks.
+  kRockLichen = 0x940,       ///< Lichen patches.
+  kRockBand = 0x960,         ///< Mineral bands.
+  kLogFurrow = 0x980,        ///< Log bark furrows.
+  kLogMoss = 0x9a0,          ///< Moss on logs.
+  kBrokenGrain = 0x9c0,      ///< Broken wood grain.
+  kMossMottle = 0x9e0,       ///< Moss cushion mottling.
+  kLitterTone = 0xa00,       ///< Leaf litter tones.
+};
+
+}  // namespace silva::render
