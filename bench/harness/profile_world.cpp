@@ -78,7 +78,8 @@ WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<Chu
   std::vector<double> crowns(ctx.library->assets.size());
   for (size_t a = 0; a < crowns.size(); ++a) crowns[a] = crown_radius(ctx.library->assets[a]);
   constexpr int kCanopyLayer = 7;  // roles use layers 0..6 (see layer_of), canopy the last
-  const auto layer_of = [](Role r) { return std::min(6, int(r) - int(Role::TreeTrunk)); };
+  // Stuff on the ground itself (ground-cover debris, role ground) covers no layer: -1.
+  const auto layer_of = [](Role r) { return r < Role::TreeTrunk ? -1 : std::min(6, int(r) - int(Role::TreeTrunk)); };
   CoverGrid cover(i0, j0, i1, j1, s, kCoverCell, inside);
   std::array<std::vector<Eigen::Vector2d>, kRoleCount> points;
   for (size_t k = 0; k < w.chunks.size(); ++k) {
@@ -92,7 +93,7 @@ WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<Chu
       const Eigen::Vector2d at(v.position.x(), v.position.y());
       points[size_t(v.role)].push_back(at);
       const Disc crown{at, crowns[v.asset] * v.scale};
-      cover.add(crown, layer_of(v.role));
+      if (layer_of(v.role) >= 0) cover.add(crown, layer_of(v.role));
       if (ctx.library->assets[v.asset].role == Role::TreeTrunk) cover.add(crown, kCanopyLayer);
       if (is_thing(v.role)) {
         const int hx = int(std::floor((at.x() - i0 * s) / kHeatCell)), hy = int(std::floor((at.y() - j0 * s) / kHeatCell));
@@ -114,7 +115,7 @@ WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<Chu
     p.candidates += cls.candidates;
     cls.dropped = cls.candidates >= cls.placed ? cls.candidates - cls.placed : 0;
     cls.per_ha = p.area_ha > 0 ? double(cls.placed) / p.area_ha : 0;
-    if (cls.placed) cls.cover_pct = cover.percent(layer_of(Role(r)));
+    if (cls.placed && layer_of(Role(r)) >= 0) cls.cover_pct = cover.percent(layer_of(Role(r)));
     cls.nearest = nearest_neighbours(points[size_t(r)]);
   }
   return p;
