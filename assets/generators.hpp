@@ -76,8 +76,4 @@ CollisionProxy cylinder_proxy(float r, float h);
 /// A random unit vector (uniform on the sphere).
 Vec3f random_direction(Rng& rng);
 
-/// Adds `count` leaf cards of half-size `half` scattered in an ellipsoid blob (radii `radii`)
-/// around `center`, each with a random orientation; the caller has begun the part.
-void add_card_blob(MeshBuilder& b, Rng& rng, const Vec3f& center, const Vec3f& radii, int count, float half);
-
 }  // namespace silva::assets
