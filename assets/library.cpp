@@ -1,5 +1,7 @@
 #include "assets/library.hpp"
 
+#include "assets/lod.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,6 +15,15 @@ constexpr const char* kKindNames[size_t(AssetKind::Count)] = {
 AssetGeometry::AssetGeometry(std::vector<Mesh> lods) : lods_(std::move(lods)) { std::call_once(once_, [] {}); }
 
 AssetGeometry::AssetGeometry(Make make) : make_(std::move(make)) {}
+
+const Mesh& AssetGeometry::shadow_caster() const {
+  const Mesh& full = lods().at(0);
+  std::call_once(shadow_once_, [&] {
+    if (std::any_of(full.parts.begin(), full.parts.end(), [](const MeshPart& p) { return p.mask != nullptr; }))
+      shadow_caster_ = reduce_mesh(full, kLodRatios[0], lod_error_bound(kLodScreenSizes[0]), kShadowCardRatio);
+  });
+  return shadow_caster_ ? *shadow_caster_ : full;
+}
 
 const std::vector<Mesh>& AssetGeometry::lods() const {
   std::call_once(once_, [this] { lods_ = make_(); });

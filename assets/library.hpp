@@ -42,11 +42,17 @@ class AssetGeometry {
   explicit AssetGeometry(Make make);
   /// The LOD meshes (made now when this is the first use).
   const std::vector<Mesh>& lods() const;
+  /// What the sun's shadow map draws: lods()[0] reduced as LOD 1 is, with its alpha cards thinned
+  /// to kShadowCardRatio (shadows are RGB only, so no label depends on it); lods()[0] itself when
+  /// that has no card part. Made on first use.
+  const Mesh& shadow_caster() const;
 
  private:
   mutable std::once_flag once_;
   mutable std::vector<Mesh> lods_;
   Make make_;
+  mutable std::once_flag shadow_once_;
+  mutable std::optional<Mesh> shadow_caster_;  ///< Empty when lods()[0] is its own caster.
 };
 
 /// Where a procedural variant comes from: generator (factory prefix), variant index and seed.

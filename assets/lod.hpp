@@ -1,7 +1,8 @@
 #pragma once
 /// @file Levels of detail: solid parts are simplified with meshoptimizer within an error that stays
-/// below a pixel where the level is drawn; alpha-tested card parts are kept whole, because thinning
-/// cards changes which pixels they cover and so the labels (LOD changes triangles, never classes).
+/// below a pixel where the level is drawn; alpha-tested card parts are kept whole in the camera's
+/// levels, because thinning cards changes which pixels they cover and so the labels (LOD changes
+/// triangles, never classes). Only the shadow caster thins them (shadows are RGB only).
 #include <span>
 #include <vector>
 
@@ -11,6 +12,9 @@ namespace silva::assets {
 
 /// Default triangle ratios of LODs 1, 2, 3 relative to the full-detail mesh.
 inline constexpr float kLodRatios[] = {0.5f, 0.25f, 0.1f};
+
+/// Share of the cards the shadow caster keeps (AssetGeometry::shadow_caster).
+inline constexpr float kShadowCardRatio = 0.3f;
 
 /// Projected-size thresholds (fraction of image height) for LODs 1..3, descending
 /// (render::MeshLods::lod_screen_sizes).
@@ -27,8 +31,9 @@ float lod_error_bound(float screen_size);
 
 /// One reduced mesh: every solid part simplified towards `ratio` of its triangles (at least one
 /// triangle each) with an error of at most `max_error` relative to the mesh's extent; card parts
-/// (alpha-masked quads) unchanged. Parts keep their order, roles, materials and masks.
-Mesh reduce_mesh(const Mesh& full, float ratio, float max_error);
+/// (alpha-masked quads) thinned to `card_ratio` of their cards by thin_cards (1: unchanged). Parts
+/// keep their order, roles, materials and masks.
+Mesh reduce_mesh(const Mesh& full, float ratio, float max_error, float card_ratio = 1.0f);
 
 /// Levels of detail with the screen-size thresholds they are drawn below.
 struct LodChain {

@@ -91,7 +91,7 @@ Mesh tree_mesh(int variant, const std::shared_ptr<const AlphaMask>& mask) {
 /// Adds a single-LOD mesh to `w` and returns its index in the scene.
 uint32_t add_mesh(ForestScene& w, Mesh m) {
   w.meshes.push_back(std::make_unique<Mesh>(std::move(m)));
-  w.scene.meshes.push_back(MeshLods{{w.meshes.back().get()}, {}, {}});
+  w.scene.meshes.emplace_back().lods = {w.meshes.back().get()};
   w.scene.meshes.back().compute_bounds();
   return uint32_t(w.scene.meshes.size() - 1);
 }

@@ -22,14 +22,18 @@ AlphaBits AlphaBits::of(const AlphaMask& mask) {
 
 void AlphaBitsCache::update(const Scene& scene) {
   ++updates_;
-  for (const MeshLods& m : scene.meshes)
-    for (const Mesh* lod : m.lods)
-      for (const MeshPart& part : lod->parts) {
-        if (!part.mask) continue;
-        auto it = entries_.find(part.mask.get());
-        if (it == entries_.end()) it = entries_.emplace(part.mask.get(), Entry{part.mask, AlphaBits::of(*part.mask), 0}).first;
-        it->second.used = updates_;
-      }
+  const auto add = [&](const Mesh& mesh) {
+    for (const MeshPart& part : mesh.parts) {
+      if (!part.mask) continue;
+      auto it = entries_.find(part.mask.get());
+      if (it == entries_.end()) it = entries_.emplace(part.mask.get(), Entry{part.mask, AlphaBits::of(*part.mask), 0}).first;
+      it->second.used = updates_;
+    }
+  };
+  for (const MeshLods& m : scene.meshes) {
+    for (const Mesh* lod : m.lods) add(*lod);
+    if (m.shadow_caster) add(*m.shadow_caster);
+  }
   std::erase_if(entries_, [&](const auto& kv) { return kv.second.used != updates_; });
 }
 

@@ -133,7 +133,7 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
                   const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store, VertexCache& vertices) {
   const Instance& inst = scene.instances[item.instance];
-  const ItemContext c{scene, sv, item, *scene.meshes[inst.mesh].lods[item.lod], object_to_view(inst, sv.view),
+  const ItemContext c{scene, sv, item, scene.meshes[inst.mesh].level(item.lod), object_to_view(inst, sv.view),
                       cull_back, masks, grid, store, vertices};
   const uint32_t t_begin = item.first_triangle, t_end = item.first_triangle + item.triangle_count;
   c.vertices.begin_item(c.mesh.positions.size());
@@ -175,7 +175,7 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
   // depends on this order.
   uint64_t triangles = 0;
   for (const uint32_t i : selection.order) {
-    const Mesh& mesh = *scene.meshes[scene.instances[i].mesh].lods[selection.lod[i]];
+    const Mesh& mesh = scene.meshes[scene.instances[i].mesh].level(selection.lod[i]);
     const uint32_t n = uint32_t(mesh.triangle_count());
     triangles += n;
     for (uint32_t first = 0; first < n; first += kTrianglesPerItem)
@@ -188,8 +188,10 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
                        const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
                        VertexCacheSet& caches) {
-  for (uint32_t i = 0; i < scene.meshes.size(); ++i)
+  for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);
+    if (scene.meshes[i].shadow_caster) check_mesh(*scene.meshes[i].shadow_caster, i);
+  }
   const std::vector<size_t> cuts = chunk_cuts(items, size_t(tbb::this_task_arena::max_concurrency()) * kChunksPerThread);
   stores.resize(cuts.size() - 1);
   tbb::parallel_for(

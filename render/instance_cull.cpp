@@ -89,18 +89,21 @@ void draw_order(InstanceSelection& sel) {
 
 }  // namespace
 
-void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
+void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out, bool shadow_casters) {
   out.resize(scene.meshes.size());
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
     const MeshLods& m = scene.meshes[i];
     for (const Mesh* lod : m.lods)
       if (!lod) throw InputError("render scene: mesh " + std::to_string(i) + " has a null LOD pointer");
+    if (m.shadow_caster && m.lods.empty())
+      throw InputError("render scene: mesh " + std::to_string(i) + " has a shadow caster but no LOD");
   }
   tbb::parallel_for(size_t(0), scene.meshes.size(), [&](size_t i) {
     const MeshLods& m = scene.meshes[i];
     AABB b = m.bounds;
     if (b.empty())
       for (const Mesh* lod : m.lods) b.extend(lod->bounds());
+    if (shadow_casters && m.shadow_caster) b.extend(m.shadow_bounds.empty() ? m.shadow_caster->bounds() : m.shadow_bounds);
     BoundingSphere s;
     if (!b.empty()) {
       s.center = b.center().cast<double>();
@@ -111,7 +114,7 @@ void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out) {
 }
 
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, InstanceSelection& out) {
+                      bool lod, InstanceSelection& out, bool shadow_casters) {
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const uint32_t mesh = scene.instances[i].mesh;
     if (mesh >= scene.meshes.size())
@@ -145,7 +148,11 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
       out.inside[i] = frustum.inside(c, r_world) ? 1 : 0;
       const double distance = c.norm();
       out.nearness[i] = (view.perspective ? distance : c.z()) - r_world;
-      out.lod[i] = lod ? lod_for_size(scene.meshes[inst.mesh], view.screen_size(r_world, distance)) : 0u;
+      const MeshLods& mesh = scene.meshes[inst.mesh];
+      out.lod[i] = lod ? lod_for_size(mesh, view.screen_size(r_world, distance)) : 0u;
+      if (shadow_casters && mesh.shadow_caster &&
+          mesh.shadow_caster->triangle_count() < mesh.lods[out.lod[i]]->triangle_count())
+        out.lod[i] = uint32_t(mesh.lods.size());
     }
   });
   draw_order(out);

@@ -18,9 +18,9 @@ struct BoundingSphere {
 };
 
 /// Bounding sphere of every scene mesh (from MeshLods::bounds, or the LODs' positions when
-/// those bounds are empty; radius -1 for a mesh without LODs, which no instance may draw). Throws
-/// InputError for a null LOD.
-void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out);
+/// those bounds are empty; radius -1 for a mesh without LODs, which no instance may draw), around
+/// the shadow casters too when `shadow_casters`. Throws InputError for a null LOD.
+void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out, bool shadow_casters = false);
 
 /// What culling decided for every scene instance in one view (indexed by instance).
 struct InstanceSelection {
@@ -32,8 +32,9 @@ struct InstanceSelection {
 };
 
 /// Culls and picks LODs of every instance by its bounding sphere, and orders the drawn ones
-/// nearest first. Throws InputError for an instance naming a missing mesh.
+/// nearest first. With `shadow_casters`, a mesh's shadow caster (level lods.size()) replaces the
+/// picked level when it has fewer triangles. Throws InputError for an instance naming a missing mesh.
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, InstanceSelection& out);
+                      bool lod, InstanceSelection& out, bool shadow_casters = false);
 
 }  // namespace silva::render

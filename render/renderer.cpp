@@ -45,12 +45,14 @@ struct Renderer::Impl {
   PassState camera;                            ///< Camera pass results.
   PassState shadow;                            ///< Shadow pass results.
 
-  /// Runs culling, LOD selection, geometry and tile passes of one view into `state`.
-  void run_pass(const Scene& scene, const ViewProjection& view, const RenderOptions& options, bool cull_back,
+  /// Runs culling, LOD selection, geometry and tile passes of one view into `state`; `shadow`
+  /// marks the sun's shadow map (back faces kept, shadow casters drawn).
+  void run_pass(const Scene& scene, const ViewProjection& view, const RenderOptions& options, bool shadow,
                 PassState& state, RenderStats* stats) {
     check_pass(view, options);
-    mesh_spheres(scene, spheres);
-    select_instances(scene, view, spheres, options.lod, state.instances);
+    const bool cull_back = !shadow && options.backface_cull;
+    mesh_spheres(scene, spheres, shadow);
+    select_instances(scene, view, spheres, options.lod, state.instances, shadow);
     const uint64_t submitted = build_draw_items(scene, state.instances, items);
     const TileGrid grid = TileGrid::make(view.width, view.height, options.tile_size);
     const SetupView setup(view);
@@ -83,7 +85,7 @@ Renderer::~Renderer() = default;
 
 const VisibilityBuffer& Renderer::render_visibility(const Scene& scene, const Camera& camera,
                                                     const RenderOptions& options, RenderStats* stats) {
-  impl_->run_pass(scene, ViewProjection::from_camera(camera), options, options.backface_cull, impl_->camera, stats);
+  impl_->run_pass(scene, ViewProjection::from_camera(camera), options, false, impl_->camera, stats);
   return impl_->camera.vis;
 }
 
@@ -100,7 +102,7 @@ void Renderer::render_shadow_map(const Scene& scene, const Vec3d& direction_to_s
   ShadowMap frame = shadow_map_frame(direction_to_sun, region, resolution);
   frame.depth.swap(out.depth);
   out = std::move(frame);
-  impl_->run_pass(scene, shadow_view(out), options, false, impl_->shadow, stats);
+  impl_->run_pass(scene, shadow_view(out), options, true, impl_->shadow, stats);
   shadow_depth_from_visibility(impl_->shadow.vis, out);
 }
 

@@ -16,12 +16,20 @@ struct MeshLods {
   /// Object-space bounds of all LODs, used for culling and LOD selection. Left empty, the
   /// renderer computes them every pass; call compute_bounds() once to cache them here.
   AABB bounds;
-  /// Fills `bounds` from the positions of every LOD.
+  /// Drawn by the shadow pass in place of any level with more triangles (its alpha cards thinned;
+  /// shadows are RGB only, so no label depends on it); null: the levels themselves.
+  const Mesh* shadow_caster = nullptr;
+  /// Object-space bounds of shadow_caster (filled by compute_bounds; empty: computed each pass).
+  AABB shadow_bounds;
+  /// Fills `bounds` from the positions of every LOD, and `shadow_bounds` from shadow_caster.
   void compute_bounds() {
     bounds = AABB{};
     for (const Mesh* m : lods)
       if (m) bounds.extend(m->bounds());
+    shadow_bounds = shadow_caster ? shadow_caster->bounds() : AABB{};
   }
+  /// The mesh of level `lod`: lods[lod], or shadow_caster for lod == lods.size().
+  const Mesh& level(uint32_t lod) const { return lod < lods.size() ? *lods[lod] : *shadow_caster; }
 };
 
 /// One placed copy of a mesh.

@@ -37,6 +37,7 @@ void SceneBuilder::make_drawable(const std::vector<render::Instance>& instances,
     const assets::Asset& a = library_->assets[missing[k]];
     render::MeshLods lods;
     for (const Mesh& m : a.lods()) lods.lods.push_back(&m);
+    if (const Mesh& caster = a.geometry->shadow_caster(); &caster != &a.lods()[0]) lods.shadow_caster = &caster;
     lods.lod_screen_sizes = a.lod_screen_sizes;
     lods.lod_screen_sizes.resize(lods.lods.size() - 1);
     lods.compute_bounds();

@@ -67,9 +67,10 @@ Camera framing_camera(const AABB& bounds, int size) {
 void render_cell(const assets::Asset& asset, const Mesh& ground, int size, std::vector<uint8_t>& rgb,
                  std::vector<uint8_t>& semantic) {
   render::Scene scene;
-  scene.meshes.push_back({{&ground}, {}, {}});
+  scene.meshes.emplace_back().lods = {&ground};
   render::MeshLods lods;
   for (const Mesh& m : asset.lods()) lods.lods.push_back(&m);
+  if (const Mesh& caster = asset.geometry->shadow_caster(); &caster != &asset.lods()[0]) lods.shadow_caster = &caster;
   lods.lod_screen_sizes = asset.lod_screen_sizes;
   scene.meshes.push_back(lods);
   for (auto& m : scene.meshes) m.compute_bounds();

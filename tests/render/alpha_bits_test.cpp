@@ -78,7 +78,7 @@ Scene scene_with(const std::shared_ptr<const AlphaMask>& mask, Mesh& mesh) {
   part.mask = mask;
   mesh.parts = {part};
   Scene scene;
-  scene.meshes.push_back(MeshLods{{&mesh}, {}, {}});
+  scene.meshes.emplace_back().lods = {&mesh};
   return scene;
 }
 

@@ -198,7 +198,9 @@ TEST(RasterLabels, LodFollowsProjectedSizeAndCanBeForcedOff) {
   OwnedScene s;
   s.meshes.push_back(std::make_unique<Mesh>(std::move(full)));
   s.meshes.push_back(std::make_unique<Mesh>(std::move(coarse)));
-  s.scene.meshes.push_back(MeshLods{{s.meshes[0].get(), s.meshes[1].get()}, {0.2f}, {}});
+  MeshLods& two = s.scene.meshes.emplace_back();
+  two.lods = {s.meshes[0].get(), s.meshes[1].get()};
+  two.lod_screen_sizes = {0.2f};
   s.add_instance(0, test::place(Vec3f(-1, 0, 2)), 1);    // diameter 1.41 m at 2 m: ~0.7 of the height
   s.add_instance(0, test::place(Vec3f(3, 0, 20), 0.0f, 4.0f), 2);  // ~0.14 of the height
   s.add_instance(0, test::place(Vec3f(0, 0, -5)), 3);    // behind the camera

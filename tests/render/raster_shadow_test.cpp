@@ -98,6 +98,41 @@ TEST(RasterShadow, FloatingQuadCastsItsFootprintOnTheGround) {
   EXPECT_NEAR(light_z(map, lit), double(texel_depth(map, lit)), 0.05);
 }
 
+TEST(RasterShadow, ShadowPassDrawsTheShadowCasterAndTheCameraPassTheLevels) {
+  // The mesh: two 2 m quads at z = 2 (4 triangles); its caster: one 6 m quad at z = 2 (2 triangles).
+  Mesh levels = test::make_quad({-1, -1, 2}, {1, -1, 2}, {1, 1, 2}, {-1, 1, 2}, Role::TreeCanopy);
+  levels.append(test::make_quad({-1, 5, 2}, {1, 5, 2}, {1, 7, 2}, {-1, 7, 2}, Role::TreeCanopy));
+  const Mesh caster = test::make_quad({-3, -3, 2}, {3, -3, 2}, {3, 3, 2}, {-3, 3, 2}, Role::TreeCanopy);
+  test::OwnedScene s;
+  s.add_instance(s.add_mesh(test::make_quad({-10, -10, 0}, {10, -10, 0}, {10, 10, 0}, {-10, 10, 0}, Role::Ground)));
+  const uint32_t tree = s.add_mesh(levels);
+  s.scene.meshes[tree].shadow_caster = &caster;
+  s.scene.meshes[tree].compute_bounds();
+  s.add_instance(tree);
+  AABB region;
+  region.extend(Vec3f(-10, -10, 0));
+  region.extend(Vec3f(10, 10, 2));
+  Renderer renderer;
+  const ShadowMap map = renderer.render_shadow_map(s.scene, Vec3d(0, 0, 1), region, 200, RenderOptions{});
+  const Vec3d under_caster_only(2.5, 0, 0), under_both(0, 0, 0), under_second_quad(0, 6, 0);
+  EXPECT_NEAR(light_z(map, under_caster_only) - double(texel_depth(map, under_caster_only)), 2.0, 1e-3);
+  EXPECT_NEAR(light_z(map, under_both) - double(texel_depth(map, under_both)), 2.0, 1e-3);
+  EXPECT_NEAR(light_z(map, under_second_quad), double(texel_depth(map, under_second_quad)), 1e-3);
+
+  // The camera, 10 m above looking straight down, sees the levels: ground at (2.5, 0), a quad at (0, 6, 2).
+  Camera cam = Camera::from_fov(200, 200, 90.0, 0.05, 100.0);
+  cam.camera_to_world = pose_from_angles(Vec3d(0, 0, 10), 0, -90, 0);
+  const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{});
+  const Mat4d to_cam = cam.world_to_camera();
+  const auto instance_at = [&](double x, double y, double z) {
+    const Vec3d c = to_cam.topLeftCorner<3, 3>() * Vec3d(x, y, z) + to_cam.block<3, 1>(0, 3);
+    const int u = int(cam.fx * c.x() / c.z() + cam.cx), v = int(cam.fy * c.y() / c.z() + cam.cy);
+    return vis.instance[size_t(v) * size_t(vis.width) + size_t(u)];
+  };
+  EXPECT_EQ(instance_at(2.5, 0, 0), 0u);
+  EXPECT_EQ(instance_at(0, 6, 2), 1u);
+}
+
 TEST(RasterShadow, BadShadowInputIsAnInputError) {
   test::OwnedScene s;
   AABB region;

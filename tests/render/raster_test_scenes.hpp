@@ -18,7 +18,7 @@ struct OwnedScene {
   /// Adds a single-LOD mesh and returns its index.
   uint32_t add_mesh(Mesh m) {
     meshes.push_back(std::make_unique<Mesh>(std::move(m)));
-    scene.meshes.push_back(MeshLods{{meshes.back().get()}, {}, {}});
+    scene.meshes.emplace_back().lods = {meshes.back().get()};
     return uint32_t(scene.meshes.size() - 1);
   }
   /// Adds an instance of mesh `mesh` with a transform, id and variation.

@@ -137,7 +137,7 @@ TEST(TerrainLod, NeighboursAtDifferentLevelsLeaveNoCrack) {
   for (const auto& [a, b] : pairs) {
     render::Scene scene;
     for (const Mesh* m : {a, b}) {
-      scene.meshes.push_back(render::MeshLods{{m}, {}, {}});
+      scene.meshes.emplace_back().lods = {m};
       render::Instance inst;
       inst.mesh = uint32_t(scene.meshes.size() - 1);
       scene.instances.push_back(inst);
