@@ -43,9 +43,9 @@ struct HalfResAo {
     });
   }
 
-  /// AO of full-resolution pixel (u, v): the sample of the nearest of the (up to 4) surrounding even
-  /// pixels whose depth is within kAoReuseDepth of the pixel's, else evaluated for the pixel itself.
-  float at(const GBuffer& g, const Camera& camera, int u, int v) const {
+  /// The sample of the nearest of the (up to 4) even pixels around full-resolution pixel (u, v)
+  /// whose depth is within kAoReuseDepth of the pixel's, or -1 when none is.
+  float reuse(const GBuffer& g, int u, int v) const {
     const float depth = g.depth[size_t(v) * size_t(g.width) + size_t(u)];
     const int hx = u / 2, hy = v / 2;
     const int nx = std::min(hx + (u & 1), width - 1), ny = std::min(hy + (v & 1), height - 1);
@@ -57,7 +57,23 @@ struct HalfResAo {
       const float diff = std::abs(g.depth[size_t(2 * y) * size_t(g.width) + size_t(2 * x)] - depth);
       if (diff <= limit && (best < 0.0f || diff < best_diff)) best = a, best_diff = diff;
     }
-    return best >= 0.0f ? best : screen_space_ao(g, camera, u, v);
+    return best;
+  }
+
+  /// AO of every surface pixel of row v into out: reused samples, and the pixels without one
+  /// evaluated together, a SIMD lane each (`missing` and `evaluated` are scratch).
+  void row(const GBuffer& g, const Camera& camera, int v, std::vector<int32_t>& missing, std::vector<float>& evaluated,
+           std::vector<float>& out) const {
+    const size_t first = size_t(v) * size_t(g.width);
+    missing.clear();
+    for (int u = 0; u < g.width; ++u) {
+      if (g.depth[first + size_t(u)] == 0.0f) continue;
+      out[size_t(u)] = reuse(g, u, v);
+      if (out[size_t(u)] < 0.0f) missing.push_back(u);
+    }
+    evaluated.resize(missing.size());
+    screen_space_ao_columns(g, camera, v, missing.data(), int(missing.size()), evaluated.data());
+    for (size_t k = 0; k < missing.size(); ++k) out[size_t(missing[k])] = evaluated[k];
   }
 };
 
@@ -65,6 +81,9 @@ struct HalfResAo {
 /// What shade_rgb evaluates for a whole row before the per-pixel loop (SIMD lanes).
 struct RowTerms {
   std::vector<float> fog_amount;    ///< HeightFog amount per pixel.
+  std::vector<float> ao;            ///< Ambient visibility per surface pixel (HalfResAo::row).
+  std::vector<int32_t> ao_missing;  ///< Scratch: pixels without a reusable AO sample.
+  std::vector<float> ao_evaluated;  ///< Scratch: their AO.
   std::vector<float> sun_visible;   ///< Shadow-map visibility per pixel (1 without shadows).
   std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only Material::Ground pixels set).
   std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
@@ -74,13 +93,14 @@ struct RowTerms {
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
-      : fog_amount(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)) {}
+      : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)) {}
 
   /// Evaluates the terms of row v.
-  void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, int v) {
+  void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int v) {
     const GBuffer& g = in.gbuffer;
     const size_t row = size_t(v) * size_t(g.width), w = size_t(g.width);
     fog.amounts(&g.position[row], w, fog_amount.data());
+    half_ao.row(g, in.camera, v, ao_missing, ao_evaluated, ao);
     if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
       shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], w, sky.to_sun, sun_visible.data());
     ground_at.clear();
@@ -106,8 +126,8 @@ struct RowTerms {
   }
 };
 
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const RowTerms& row,
-                       const HalfResAo& half_ao, int u, int v, const Vec3f& view_dir) {
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const RowTerms& row, int u, int v,
+                       const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
@@ -121,7 +141,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   if (sun_facing > 0.0f && sky.sun_radiance.maxCoeff() > 0.0f) {
     light = sky.sun_radiance * (sun_facing * row.sun_visible[size_t(u)]);
   }
-  const float ao = half_ao.at(g, in.camera, u, v);
+  const float ao = row.ao[size_t(u)];
   light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
   return fog.apply(albedo.cwiseProduct(light), row.fog_amount[size_t(u)], view_dir);
 }
@@ -146,12 +166,12 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     std::vector<Vec3f> radiance(size_t(g.width)), grain(in.film_grain > 0.0f ? size_t(g.width) : 0);
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
-      terms.evaluate(in, sky, fog, v);
+      terms.evaluate(in, sky, fog, half_ao, v);
       for (int u = 0; u < g.width; ++u) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
         radiance[size_t(u)] = g.depth[i] == 0.0f ? sky.radiance(dir)
-                                                 : surface_radiance(in, sky, fog, terms, half_ao, u, v, dir);
+                                                 : surface_radiance(in, sky, fog, terms, u, v, dir);
         if (!grain.empty()) grain[size_t(u)] = film_grain(in.seed, key, i, in.film_grain);
       }
       encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,

@@ -18,8 +18,10 @@ namespace hn = hwy::HWY_NAMESPACE;
 constexpr float kPattern[8][2] = {{1.0f, 0.0f},       {0.354f, 0.354f},  {0.0f, 1.0f},   {-0.354f, 0.354f},
                                   {-1.0f, 0.0f},      {-0.354f, -0.354f}, {0.0f, -1.0f}, {0.354f, -0.354f}};
 
-/// screen_space_ao_row for one target: one pixel per float lane.
-void AoRowImpl(const GBuffer& g, const Camera& camera, int v, int u0, int step, int count, float* out) {
+/// screen_space_ao of `count` pixels of row v into out, one pixel per float lane: pixel k is at
+/// column columns[k], or u0 + k step when `columns` is null.
+void AoRowImpl(const GBuffer& g, const Camera& camera, int v, const int32_t* columns, int u0, int step, int count,
+               float* out) {
   const hn::ScalableTag<float> d;
   const hn::RebindToSigned<decltype(d)> di;
   const int N = int(hn::Lanes(d));
@@ -33,8 +35,13 @@ void AoRowImpl(const GBuffer& g, const Camera& camera, int v, int u0, int step, 
   };
   for (int first = 0; first < count; first += N) {
     const int n = std::min(N, count - first);
-    const auto u = hn::Add(hn::Set(di, u0 + first * step), hn::Mul(hn::Iota(di, 0), hn::Set(di, step)));
     const auto live = hn::FirstN(di, size_t(n));
+    auto u = hn::Add(hn::Set(di, u0 + first * step), hn::Mul(hn::Iota(di, 0), hn::Set(di, step)));
+    if (columns) {
+      HWY_ALIGN int32_t listed[hn::MaxLanes(di)] = {};
+      std::copy(columns + first, columns + first + n, listed);
+      u = hn::Load(di, listed);
+    }
     const auto i = hn::IfThenElseZero(live, hn::Add(hn::Mul(hn::Set(di, v), width_i), u));  // dead lanes read pixel 0
     const auto i3 = hn::Mul(i, hn::Set(di, 3));
     const auto gather3 = [&](const float* base, auto index3, int c) {
@@ -83,7 +90,12 @@ HWY_EXPORT(AoRowImpl);
 HWY_EXPORT(AoTargetImpl);
 
 void screen_space_ao_row(const GBuffer& g, const Camera& camera, int v, int u0, int step, int count, float* out) {
-  if (count > 0) HWY_DYNAMIC_DISPATCH(AoRowImpl)(g, camera, v, u0, step, count, out);
+  if (count > 0) HWY_DYNAMIC_DISPATCH(AoRowImpl)(g, camera, v, nullptr, u0, step, count, out);
+}
+
+void screen_space_ao_columns(const GBuffer& g, const Camera& camera, int v, const int32_t* columns, int count,
+                             float* out) {
+  if (count > 0) HWY_DYNAMIC_DISPATCH(AoRowImpl)(g, camera, v, columns, 0, 0, count, out);
 }
 
 float screen_space_ao(const GBuffer& g, const Camera& camera, int u, int v) {

@@ -53,9 +53,15 @@ TEST(ShadingAo, RowsAreIdenticalOnEveryHighwayTargetAndMatchSinglePixels) {
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<float> row(w);
     std::vector<float> even(static_cast<size_t>(half));
+    std::vector<int32_t> columns;  // every third pixel, right to left
+    for (int u = cam.width - 1; u >= 0; u -= 3) columns.push_back(u);
+    std::vector<float> listed(columns.size());
     for (int v = 0; v < cam.height; ++v) {
       screen_space_ao_row(walled, cam, v, 0, 1, cam.width, row.data());
       screen_space_ao_row(walled, cam, v, 0, 2, half, even.data());
+      screen_space_ao_columns(walled, cam, v, columns.data(), int(columns.size()), listed.data());
+      for (size_t k = 0; k < columns.size(); ++k)
+        EXPECT_EQ(listed[k], reference[size_t(v) * w + size_t(columns[k])]) << columns[k] << "," << v;
       for (int u = 0; u < cam.width; ++u) {
         const float expected = reference[size_t(v) * w + size_t(u)];
         EXPECT_EQ(row[size_t(u)], expected) << u << "," << v;
