@@ -75,4 +75,15 @@ std::vector<uint32_t> thin_cards(const Mesh& mesh, const MeshPart& part, float r
   return out;
 }
 
+Mesh with_thinned_cards(const Mesh& mesh, float ratio) {
+  std::vector<Vec3f> positions = mesh.positions;
+  std::vector<std::vector<uint32_t>> part_indices;
+  for (const MeshPart& part : mesh.parts) {
+    const auto first = mesh.indices.begin() + part.first_index;
+    part_indices.push_back(part.mask ? thin_cards(mesh, part, ratio, positions)
+                                     : std::vector<uint32_t>(first, first + part.index_count));
+  }
+  return compact_mesh(mesh, positions, part_indices);
+}
+
 }  // namespace silva::assets

@@ -15,4 +15,7 @@ namespace silva::assets {
 /// sqrt(n / kept). A part whose cards share vertices with other parts is returned whole.
 std::vector<uint32_t> thin_cards(const Mesh& mesh, const MeshPart& part, float ratio, std::vector<Vec3f>& positions);
 
+/// `mesh` with every card (alpha-masked) part thinned by thin_cards to `ratio`; solid parts unchanged.
+Mesh with_thinned_cards(const Mesh& mesh, float ratio);
+
 }  // namespace silva::assets

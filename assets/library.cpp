@@ -1,5 +1,6 @@
 #include "assets/library.hpp"
 
+#include "assets/card_thinning.hpp"
 #include "assets/lod.hpp"
 
 #include <algorithm>
@@ -20,7 +21,7 @@ const Mesh& AssetGeometry::shadow_caster() const {
   const Mesh& full = lods().at(0);
   std::call_once(shadow_once_, [&] {
     if (std::any_of(full.parts.begin(), full.parts.end(), [](const MeshPart& p) { return p.mask != nullptr; }))
-      shadow_caster_ = reduce_mesh(full, kLodRatios[0], lod_error_bound(kLodScreenSizes[0]), kShadowCardRatio);
+      shadow_caster_ = with_thinned_cards(lods().size() > 1 ? lods()[1] : full, kShadowCardRatio);
   });
   return shadow_caster_ ? *shadow_caster_ : full;
 }

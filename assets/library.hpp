@@ -42,9 +42,9 @@ class AssetGeometry {
   explicit AssetGeometry(Make make);
   /// The LOD meshes (made now when this is the first use).
   const std::vector<Mesh>& lods() const;
-  /// What the sun's shadow map draws: lods()[0] reduced as LOD 1 is, with its alpha cards thinned
-  /// to kShadowCardRatio (shadows are RGB only, so no label depends on it); lods()[0] itself when
-  /// that has no card part. Made on first use.
+  /// What the sun's shadow map draws: LOD 1 (or lods()[0] without one) with its alpha cards
+  /// thinned to kShadowCardRatio (shadows are RGB only, so no label depends on it); lods()[0]
+  /// itself when that has no card part. Made on first use.
   const Mesh& shadow_caster() const;
 
  private:

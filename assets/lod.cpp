@@ -7,8 +7,6 @@
 
 #include <meshoptimizer.h>
 
-#include "assets/card_thinning.hpp"
-
 namespace silva::assets {
 
 namespace {
@@ -42,19 +40,14 @@ std::vector<uint32_t> simplify_part(const Mesh& full, const MeshPart& part, floa
 
 float lod_error_bound(float screen_size) { return kLodMaxErrorPixels / (kLodReferenceHeight * screen_size); }
 
-Mesh reduce_mesh(const Mesh& full, float ratio, float max_error, float card_ratio) {
+Mesh reduce_mesh(const Mesh& full, float ratio, float max_error) {
   std::vector<std::vector<uint32_t>> part_indices;
-  std::vector<Vec3f> positions = full.positions;  // thin_cards grows the cards it keeps here
   for (const MeshPart& part : full.parts) {
     const auto first = full.indices.begin() + part.first_index;
-    if (!part.mask)
-      part_indices.push_back(simplify_part(full, part, ratio, max_error));
-    else if (card_ratio < 1.0f)
-      part_indices.push_back(thin_cards(full, part, card_ratio, positions));
-    else
-      part_indices.emplace_back(first, first + part.index_count);
+    part_indices.push_back(part.mask ? std::vector<uint32_t>(first, first + part.index_count)
+                                     : simplify_part(full, part, ratio, max_error));
   }
-  return compact_mesh(full, positions, part_indices);
+  return compact_mesh(full, full.positions, part_indices);
 }
 
 LodChain build_lods(const Mesh& full, std::span<const float> screen_sizes) {

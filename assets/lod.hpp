@@ -31,9 +31,8 @@ float lod_error_bound(float screen_size);
 
 /// One reduced mesh: every solid part simplified towards `ratio` of its triangles (at least one
 /// triangle each) with an error of at most `max_error` relative to the mesh's extent; card parts
-/// (alpha-masked quads) thinned to `card_ratio` of their cards by thin_cards (1: unchanged). Parts
-/// keep their order, roles, materials and masks.
-Mesh reduce_mesh(const Mesh& full, float ratio, float max_error, float card_ratio = 1.0f);
+/// (alpha-masked quads) unchanged. Parts keep their order, roles, materials and masks.
+Mesh reduce_mesh(const Mesh& full, float ratio, float max_error);
 
 /// Levels of detail with the screen-size thresholds they are drawn below.
 struct LodChain {

@@ -76,7 +76,7 @@ TEST(CardThinning, CardsSharingVerticesWithAnotherPartStayWhole) {
   EXPECT_EQ(thin_cards(m, m.parts[0], 0.25f, positions).size(), size_t(m.parts[0].index_count));
 }
 
-TEST(ShadowCaster, ThinsTheCardsOfTheFullMeshAndKeepsItsParts) {
+TEST(ShadowCaster, IsLodOneWithItsCardsThinned) {
   Mesh full = row_of_cards(40);
   Mesh sphere = unit_icosphere(3);
   MeshPart part;
@@ -85,12 +85,14 @@ TEST(ShadowCaster, ThinsTheCardsOfTheFullMeshAndKeepsItsParts) {
   part.material = Material::BarkBroadleaf;
   sphere.parts = {part};
   full.append(sphere);
-  const AssetGeometry geometry(std::vector<Mesh>{full});
+  const AssetGeometry geometry(build_lods(full).lods);
+  ASSERT_GE(geometry.lods().size(), 2u);
+  const Mesh& lod1 = geometry.lods()[1];
   const Mesh& caster = geometry.shadow_caster();
-  ASSERT_NE(&caster, &geometry.lods()[0]);
   ASSERT_EQ(caster.parts.size(), 2u);
   EXPECT_EQ(caster.parts[0].index_count, uint32_t(std::lround(40 * kShadowCardRatio)) * 6u);
-  EXPECT_LT(caster.parts[1].index_count, full.parts[1].index_count);  // reduced as LOD 1 is
+  EXPECT_EQ(caster.parts[1].index_count, lod1.parts[1].index_count);
+  EXPECT_LT(caster.parts[1].index_count, full.parts[1].index_count);
   EXPECT_EQ(caster.parts[1].role, Role::TreeTrunk);
   EXPECT_EQ(&geometry.shadow_caster(), &caster);  // made once
 
