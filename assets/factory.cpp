@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "assets/lod.hpp"
+#include "assets/season_dress.hpp"
 
 namespace silva::assets {
 
@@ -61,15 +62,17 @@ const Factory* find_factory(const std::string& prefix) {
   return nullptr;
 }
 
-GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant) {
+GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant, Season season) {
   uint64_t key = 0;
   for (const char* c = factory.prefix; *c; ++c) key = hash_combine(key, uint64_t(uint8_t(*c)));
   Rng rng(seed, hash_combine(key, variant), Purpose::AssetShape);
-  return factory.generate(rng);
+  GeneratedAsset g = factory.generate(rng);
+  dress_for_season(g.mesh, season);
+  return g;
 }
 
-Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant) {
-  GeneratedAsset g = generate_variant(factory, seed, variant);
+Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant, Season season) {
+  GeneratedAsset g = generate_variant(factory, seed, variant, season);
   Asset a;
   a.name = variant_name(factory, variant);
   a.source = ProceduralSource{factory.prefix, variant, seed};
@@ -83,23 +86,23 @@ Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant) {
 }
 
 Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role role, const CollisionProxy& proxy,
-                 std::vector<float> lod_screen_sizes) {
+                 std::vector<float> lod_screen_sizes, Season season) {
   Asset a;
   a.name = variant_name(factory, variant);
   a.source = ProceduralSource{factory.prefix, variant, seed};
   a.kind = factory.kind;
   a.role = role;
   a.geometry = std::make_shared<const AssetGeometry>(
-      [&factory, seed, variant] { return build_lods(generate_variant(factory, seed, variant).mesh).lods; });
+      [&factory, seed, variant, season] { return build_lods(generate_variant(factory, seed, variant, season).mesh).lods; });
   a.lod_screen_sizes = std::move(lod_screen_sizes);
   a.proxy = proxy;
   return a;
 }
 
-AssetLibrary generate_library(uint64_t seed) {
+AssetLibrary generate_library(uint64_t seed, Season season) {
   AssetLibrary lib;
   for (const Factory& f : factories())
-    for (uint32_t v = 0; v < f.variants; ++v) lib.assets.push_back(make_asset(f, seed, v));
+    for (uint32_t v = 0; v < f.variants; ++v) lib.assets.push_back(make_asset(f, seed, v, season));
   lib.index_kinds();
   return lib;
 }

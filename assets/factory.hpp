@@ -9,6 +9,7 @@
 
 #include "assets/generators.hpp"
 #include "assets/library.hpp"
+#include "core/season.hpp"
 
 namespace silva::assets {
 
@@ -29,18 +30,20 @@ std::span<const Factory> factories();
 /// The factory whose prefix is `prefix`, or null.
 const Factory* find_factory(const std::string& prefix);
 
-/// Runs `factory` for `variant`: RNG keyed by the prefix and variant (Purpose::AssetShape).
-GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant);
+/// Runs `factory` for `variant` (RNG keyed by the prefix and variant, Purpose::AssetShape) and
+/// dresses the mesh for `season` (dress_for_season; the shape never depends on the season).
+GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant,
+                                Season season = Season::Summer);
 
 /// Runs `factory` for `variant` and builds the LODs and thresholds now; no file.
-Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant);
+Asset make_asset(const Factory& factory, uint64_t seed, uint32_t variant, Season season = Season::Summer);
 
 /// Variant `variant` of `factory` with the given metadata (from library.json); its meshes are
-/// generated and their LODs built when first used.
+/// generated for `season` and their LODs built when first used.
 Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role role, const CollisionProxy& proxy,
-                 std::vector<float> lod_screen_sizes);
+                 std::vector<float> lod_screen_sizes, Season season = Season::Summer);
 
-/// The whole built-in library (every factory, every variant), kinds indexed.
-AssetLibrary generate_library(uint64_t seed = kDefaultAssetSeed);
+/// The whole built-in library (every factory, every variant) for `season`, kinds indexed.
+AssetLibrary generate_library(uint64_t seed = kDefaultAssetSeed, Season season = Season::Summer);
 
 }  // namespace silva::assets

@@ -18,7 +18,7 @@ std::string generator_names() {
 }
 
 /// A generator entry: its metadata now, its meshes when first drawn.
-Asset procedural_entry(const ManifestEntry& e, const std::string& where) {
+Asset procedural_entry(const ManifestEntry& e, const std::string& where, Season season) {
   const Factory* factory = find_factory(e.source->generator);
   if (!factory)
     throw InputError(where + ".generator '" + e.source->generator + "' is not a built-in generator (" +
@@ -26,7 +26,7 @@ Asset procedural_entry(const ManifestEntry& e, const std::string& where) {
   if (factory->kind != e.kind)
     throw InputError(where + ".kind " + kind_name(e.kind) + " does not match generator " + factory->prefix + " (" +
                      kind_name(factory->kind) + ")");
-  Asset a = lazy_asset(*factory, e.source->seed, e.source->variant, e.role, e.proxy, e.lod_screen_sizes);
+  Asset a = lazy_asset(*factory, e.source->seed, e.source->variant, e.role, e.proxy, e.lod_screen_sizes, season);
   a.name = e.name;
   return a;
 }
@@ -54,12 +54,12 @@ Asset file_entry(const ManifestEntry& e, const std::filesystem::path& folder, co
 
 }  // namespace
 
-AssetLibrary load_library(const std::filesystem::path& library_json) {
+AssetLibrary load_library(const std::filesystem::path& library_json, Season season) {
   const std::vector<ManifestEntry> entries = read_manifest(library_json);
   AssetLibrary lib;
   for (size_t i = 0; i < entries.size(); ++i) {
     const std::string where = library_json.string() + " assets[" + std::to_string(i) + "]";
-    lib.assets.push_back(entries[i].source ? procedural_entry(entries[i], where)
+    lib.assets.push_back(entries[i].source ? procedural_entry(entries[i], where, season)
                                            : file_entry(entries[i], library_json.parent_path(), where));
   }
   lib.index_kinds();

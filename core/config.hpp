@@ -50,6 +50,7 @@ struct VegetationConfig {
   double density = 5;         ///< vegetation.density: percent of placement points holding a tree (1..25)
   double grid_spacing = 2.0;  ///< vegetation.grid_spacing (m)
   bool ground = true;         ///< vegetation.ground: grass/ferns on/off
+  std::string season = "summer";  ///< vegetation.season: summer, autumn or winter
 };
 
 /// Terrain heightfield (`[terrain]`).

@@ -34,6 +34,9 @@ enum class Material : uint8_t {
   LeavesBeech,    ///< Beech leaves: fresh mid green.
   LeavesBirch,    ///< Birch leaves: light yellow-green.
   LeavesOak,      ///< Oak leaves: deep green.
+  AutumnLeaves,   ///< Deciduous leaves in autumn: yellow, orange and brown by tree and card.
+  AutumnNeedles,  ///< Larch needles in autumn: golden.
+  BareTwigs,      ///< Twig cards of deciduous trees and shrubs in winter: grey-brown.
   Count,
 };
 

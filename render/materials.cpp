@@ -63,6 +63,21 @@ Vec3f grass(const SurfacePoint& s) {
   return foliage(s, base) * (0.75f + 0.4f * tip);
 }
 
+/// Autumn leaves: each tree turned its own way (its variation) from yellow-green through yellow
+/// and orange to brown, patches of the crown ahead or behind.
+Vec3f autumn_leaves(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float tree = float(s.variation >> 16) / 65535.0f;
+  const float patch = fbm2(p.x() * 0.7f + 0.4f * p.z(), p.y() * 0.7f - 0.4f * p.z(), 2, kAutumnTurn);
+  const float turn = std::clamp(0.15f + 0.7f * tree + 0.6f * (patch - 0.5f), 0.0f, 1.0f);
+  const Vec3f green(0.16f, 0.19f, 0.04f), yellow(0.4f, 0.29f, 0.03f), orange(0.38f, 0.13f, 0.02f),
+      brown(0.19f, 0.095f, 0.035f);
+  const Vec3f base = turn < 0.35f   ? lerp(green, yellow, turn / 0.35f)
+                     : turn < 0.7f  ? lerp(yellow, orange, (turn - 0.35f) / 0.35f)
+                                    : lerp(orange, brown, (turn - 0.7f) / 0.3f);
+  return foliage(s, base);
+}
+
 /// Wood of logs and stumps: weathered bark-brown sides, pale cut faces on top with rings.
 Vec3f wood(const SurfacePoint& s) {
   const Vec3f& p = s.position;
@@ -104,6 +119,9 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::LeavesBeech: return foliage(s, Vec3f(0.08f, 0.18f, 0.035f));
     case Material::LeavesBirch: return foliage(s, Vec3f(0.13f, 0.22f, 0.045f));
     case Material::LeavesOak: return foliage(s, Vec3f(0.06f, 0.14f, 0.03f));
+    case Material::AutumnLeaves: return autumn_leaves(s);
+    case Material::AutumnNeedles: return foliage(s, Vec3f(0.36f, 0.25f, 0.045f));
+    case Material::BareTwigs: return foliage(s, Vec3f(0.11f, 0.095f, 0.08f));
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);
@@ -121,7 +139,9 @@ float material_translucency(Material m) {
     case Material::NeedlesLarch:
     case Material::LeavesBeech:
     case Material::LeavesBirch:
-    case Material::LeavesOak: return 1.0f;
+    case Material::LeavesOak:
+    case Material::AutumnLeaves:
+    case Material::AutumnNeedles: return 1.0f;
     default: return 0.0f;
   }
 }

@@ -27,6 +27,7 @@ enum NoiseSalt : uint32_t {
   kBarkLichen = 0x620,       ///< Lichen on bark.
   kFoliage = 0x640,          ///< Per-instance tint and mottling.
   kWood = 0x660,             ///< Cut wood rings.
+  kAutumnTurn = 0x680,       ///< How far autumn leaves have turned, patch by patch.
   // Species barks (render/bark_materials.cpp).
   kBarkFurrow = 0x700,       ///< Furrows.
   kBarkPlate = 0x720,        ///< Plates and flakes.

@@ -59,7 +59,9 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
     throw InputError("lighting.time_of_day: no preset named \"" + loaded.config.lighting.time_of_day +
                      "\"; define [lighting.presets." + loaded.config.lighting.time_of_day + "] or use day, dusk, night");
   setup.preset = it->second;
-  setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json));
+  Season season = Season::Summer;
+  parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
+  setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));
   setup.world = world::make_world_context(loaded.config, *setup.library);
   return setup;
 }

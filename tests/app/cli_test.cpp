@@ -109,6 +109,9 @@ TEST_F(Cli, BadSetAssignments) {
              "--set seed: expected key=value, e.g. --set camera.fov_deg=75");
   expect_bad(run({"generate", "--out", out_, "--set", "vegetation.densty=5"}), 2,
              "--set vegetation.densty=5: unknown key 'vegetation.densty' (did you mean 'vegetation.density'?)");
+  expect_bad(run({"generate", "--out", out_, "--set", "vegetation.season=wintr"}), 2,
+             "--set vegetation.season=wintr: vegetation.season: \"wintr\" is not allowed (one of summer, autumn, "
+             "winter; did you mean \"winter\"?)");
 }
 
 TEST_F(Cli, CrossKeyAndFlagErrors) {

@@ -16,14 +16,14 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "captures.autopilot_yaws", "captures.aerial", "captures.poses_file", "camera.fov_deg",
         "camera.near", "camera.far", "camera.ground_height", "camera.aerial_height",
         "camera.aerial_pitch_deg", "camera.film_grain", "camera.antialias", "vegetation.density",
-        "vegetation.grid_spacing", "vegetation.ground", "terrain.max_elevation", "terrain.octaves",
+        "vegetation.grid_spacing", "vegetation.ground", "vegetation.season", "terrain.max_elevation", "terrain.octaves",
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
         "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 39u);
+  EXPECT_EQ(names.size(), 40u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

@@ -1,0 +1,38 @@
+#include "assets/season_dress.hpp"
+
+#include "assets/alpha_masks.hpp"
+
+namespace silva::assets {
+
+bool is_deciduous_foliage(Material m) {
+  switch (m) {
+  case Material::Leaves:
+  case Material::ShrubLeaves:
+  case Material::NeedlesLarch:
+  case Material::LeavesBeech:
+  case Material::LeavesBirch:
+  case Material::LeavesOak:
+    return true;
+  default:
+    return false;
+  }
+}
+
+void dress_for_season(Mesh &mesh, Season season) {
+  if (season == Season::Summer)
+    return;
+  for (MeshPart &part : mesh.parts) {
+    if (!part.mask || !is_deciduous_foliage(part.material))
+      continue;
+    if (season == Season::Winter) {
+      part.mask = bare_twig_mask();
+      part.material = Material::BareTwigs;
+    } else {
+      part.material = part.material == Material::NeedlesLarch
+                          ? Material::AutumnNeedles
+                          : Material::AutumnLeaves;
+    }
+  }
+}
+
+} // namespace silva::assets

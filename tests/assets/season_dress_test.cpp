@@ -1,0 +1,81 @@
+// Seasons: the same tree shapes, dressed in autumn colours or bare twigs in
+// winter.
+#include "assets/season_dress.hpp"
+
+#include <gtest/gtest.h>
+
+#include "assets/alpha_masks.hpp"
+#include "assets/factory.hpp"
+
+namespace silva::assets {
+namespace {
+
+/// Variant 3 of the built-in generator `prefix` for `season`.
+Mesh variant(const char *prefix, Season season) {
+  const Factory *f = find_factory(prefix);
+  EXPECT_NE(f, nullptr) << prefix;
+  return generate_variant(*f, kDefaultAssetSeed, 3, season).mesh;
+}
+
+/// The mesh's card (masked) parts.
+std::vector<MeshPart> cards(const Mesh &m) {
+  std::vector<MeshPart> out;
+  for (const MeshPart &p : m.parts)
+    if (p.mask)
+      out.push_back(p);
+  return out;
+}
+
+TEST(SeasonDress, ShapesNeverDependOnTheSeason) {
+  for (const char *prefix : {"beech", "larch", "spruce", "hazel"}) {
+    const Mesh summer = variant(prefix, Season::Summer);
+    for (Season s : {Season::Autumn, Season::Winter}) {
+      const Mesh dressed = variant(prefix, s);
+      EXPECT_EQ(dressed.positions, summer.positions) << prefix;
+      EXPECT_EQ(dressed.indices, summer.indices) << prefix;
+      ASSERT_EQ(dressed.parts.size(), summer.parts.size()) << prefix;
+      for (size_t k = 0; k < summer.parts.size(); ++k)
+        EXPECT_EQ(dressed.parts[k].role, summer.parts[k].role);
+    }
+  }
+}
+
+TEST(SeasonDress, AutumnTurnsDeciduousLeavesAndLarchNeedles) {
+  ASSERT_FALSE(cards(variant("beech", Season::Autumn)).empty());
+  for (const MeshPart &p : cards(variant("beech", Season::Autumn)))
+    EXPECT_EQ(p.material, Material::AutumnLeaves);
+  for (const MeshPart &p : cards(variant("hazel", Season::Autumn)))
+    EXPECT_EQ(p.material, Material::AutumnLeaves);
+  for (const MeshPart &p : cards(variant("larch", Season::Autumn)))
+    EXPECT_EQ(p.material, Material::AutumnNeedles);
+  for (const MeshPart &p : cards(variant("spruce", Season::Autumn)))
+    EXPECT_EQ(p.material, Material::NeedlesSpruce);
+}
+
+TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {
+  for (const char *prefix : {"beech", "birch", "oak", "larch", "hazel"})
+    for (const MeshPart &p : cards(variant(prefix, Season::Winter))) {
+      EXPECT_EQ(p.material, Material::BareTwigs) << prefix;
+      EXPECT_EQ(p.mask, bare_twig_mask()) << prefix;
+    }
+  const Mesh summer = variant("pine", Season::Summer),
+             winter = variant("pine", Season::Winter);
+  ASSERT_EQ(cards(winter).size(), cards(summer).size());
+  for (size_t k = 0; k < cards(winter).size(); ++k) {
+    EXPECT_EQ(cards(winter)[k].material, cards(summer)[k].material);
+    EXPECT_EQ(cards(winter)[k].mask, cards(summer)[k].mask);
+  }
+}
+
+TEST(SeasonDress, NamesRoundTrip) {
+  for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
+    Season parsed = Season::Summer;
+    ASSERT_TRUE(parse_season(season_name(s), parsed));
+    EXPECT_EQ(parsed, s);
+  }
+  Season unused = Season::Summer;
+  EXPECT_FALSE(parse_season("spring", unused));
+}
+
+} // namespace
+} // namespace silva::assets
