@@ -19,20 +19,22 @@ using render::WeatherPreset;
 template <class T>
 struct PresetKind;
 
+/// Times of day: [lighting.presets.<name>].
 template <>
 struct PresetKind<LightingPreset> {
   static constexpr const char* table = "lighting.presets";  ///< Where the tables live.
   static constexpr const char* base = "day";                ///< What a new name starts from.
-  static auto fields() { return render::preset_fields(); }
-  static auto builtins() { return render::builtin_presets(); }
+  static auto fields() { return render::preset_fields(); }      ///< The table's keys.
+  static auto builtins() { return render::builtin_presets(); }  ///< What the tables overlay.
 };
 
+/// Weathers: [lighting.weather_presets.<name>].
 template <>
 struct PresetKind<WeatherPreset> {
   static constexpr const char* table = "lighting.weather_presets";
   static constexpr const char* base = "clear";
-  static auto fields() { return render::weather_fields(); }
-  static auto builtins() { return render::builtin_weathers(); }
+  static auto fields() { return render::weather_fields(); }      ///< The table's keys.
+  static auto builtins() { return render::builtin_weathers(); }  ///< What the tables overlay.
 };
 
 /// "file:line:col" of a node when toml++ knows it, else just the file.

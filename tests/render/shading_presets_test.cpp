@@ -2,6 +2,7 @@
 
 #include "render/lighting.hpp"
 #include "render/shade.hpp"
+#include "render/weather_overlay.hpp"
 #include "shading_scene.hpp"
 
 namespace silva::render {
@@ -89,6 +90,27 @@ TEST(ShadingPresets, SnowAndWetnessChangeTheGroundsLook) {
   const double dry = mean_luma(shade_view(preset_day(), 60));
   EXPECT_GT(mean_luma(shade_view(snow, 60)), dry + 30.0);  // white ground
   EXPECT_LT(mean_luma(shade_view(rain, 60)), dry);         // darker wet ground
+}
+
+TEST(ShadingPresets, RainAndSnowfallAreSeededPerFrame) {
+  const Sky sky(preset_day());
+  const auto draw = [&](const WeatherPreset& weather, uint64_t frame_key) {
+    const WeatherOverlay overlay(weather, sky, 1, frame_key, 90);
+    std::vector<Vec3f> image(160 * 90, Vec3f::Zero());
+    for (int v = 0; v < 90; ++v) overlay.apply_row(v, &image[size_t(v) * 160], 160);
+    return image;
+  };
+  const WeatherPreset rain = builtin_weathers().at("rain"), snow = builtin_weathers().at("snow");
+  for (const WeatherPreset& w : {rain, snow}) {
+    const std::vector<Vec3f> a = draw(w, 7), b = draw(w, 7), c = draw(w, 8);
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a, c);
+    size_t touched = 0;
+    for (const Vec3f& p : a) touched += p != Vec3f::Zero() ? 1 : 0;
+    EXPECT_GT(touched, a.size() / 100);  // visible ...
+    EXPECT_LT(touched, a.size() / 3);    // ... but the scene stays visible
+  }
+  EXPECT_FALSE(WeatherOverlay(WeatherPreset{}, sky, 1, 7, 90).active());
 }
 
 TEST(ShadingPresets, SunDirectionFollowsElevationAndAzimuth) {
