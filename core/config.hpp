@@ -19,6 +19,7 @@ struct OutputConfig {
 /// Lighting selection (`[lighting]`); the presets themselves live in render::LightingPreset.
 struct LightingConfig {
   std::string time_of_day = "day";  ///< lighting.time_of_day: preset name
+  std::string weather = "clear";    ///< lighting.weather: weather preset name
 };
 
 /// Capture sequences (`[captures]`).

@@ -24,6 +24,7 @@ enum class Purpose : uint32_t {
   RandomPose = 30,
   FilmGrain = 40,
   MaterialNoise = 41,
+  WeatherOverlay = 42,
   Test = 1000,
 };
 

@@ -17,6 +17,8 @@
 #include "render/shadow_lookup.hpp"
 #include "render/sky.hpp"
 #include "render/sky_fog.hpp"
+#include "render/weather_look.hpp"
+#include "render/weather_overlay.hpp"
 
 namespace silva::render {
 
@@ -77,7 +79,6 @@ struct HalfResAo {
   }
 };
 
-/// Linear radiance arriving at a visible surface pixel, fog included.
 /// What shade_rgb evaluates for a whole row before the per-pixel loop (SIMD lanes).
 struct RowTerms {
   std::vector<float> fog_amount;    ///< HeightFog amount per pixel.
@@ -101,7 +102,7 @@ struct RowTerms {
     const size_t row = size_t(v) * size_t(g.width), w = size_t(g.width);
     fog.amounts(&g.position[row], w, fog_amount.data());
     half_ao.row(g, in.camera, v, ao_missing, ao_evaluated, ao);
-    if (in.shadow && sky.sun_radiance.maxCoeff() > 0.0f)
+    if (in.shadow && sky.sun_illuminance.maxCoeff() > 0.0f)
       shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], w, sky.to_sun, sun_visible.data());
     ground_at.clear();
     gather_p.clear();
@@ -126,24 +127,32 @@ struct RowTerms {
   }
 };
 
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const RowTerms& row, int u, int v,
-                       const Vec3f& view_dir) {
+constexpr float kInvPi = 0.318309886183790672f;
+
+/// Linear radiance (kcd/m²) leaving a visible surface pixel towards the camera, fog included:
+/// albedo (after the weather's look) x (sun + ambient SH irradiance x occlusion) / π, plus a wet sheen.
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const WeatherLook& look,
+                       const RowTerms& row, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
-  const Vec3f albedo = g.base_color[i] != 0             ? unpack_srgb8(g.base_color[i])
-                       : s.material == Material::Ground ? row.ground[size_t(u)]
-                                                        : material_albedo(s);
+  Vec3f albedo = g.base_color[i] != 0             ? unpack_srgb8(g.base_color[i])
+                 : s.material == Material::Ground ? row.ground[size_t(u)]
+                                                  : material_albedo(s);
+  if (look.active()) albedo = look.albedo(albedo, s);
   const float n_dot_l = s.normal.dot(sky.to_sun);
   const float translucency = material_translucency(s.material) * in.preset.foliage_translucency;
   const float sun_facing = n_dot_l > 0.0f ? n_dot_l : -n_dot_l * translucency;
   Vec3f light = Vec3f::Zero();
-  if (sun_facing > 0.0f && sky.sun_radiance.maxCoeff() > 0.0f) {
-    light = sky.sun_radiance * (sun_facing * row.sun_visible[size_t(u)]);
+  if (sun_facing > 0.0f && sky.sun_illuminance.maxCoeff() > 0.0f) {
+    light = sky.sun_illuminance * (sun_facing * row.sun_visible[size_t(u)]);
   }
   const float ao = row.ao[size_t(u)];
-  light += sky.ambient(s.normal) * (1.0f - in.preset.ao_strength * (1.0f - ao));
-  return fog.apply(albedo.cwiseProduct(light), row.fog_amount[size_t(u)], view_dir);
+  const float ambient_visible = 1.0f - in.preset.ao_strength * (1.0f - ao);
+  light += sky.ambient(s.normal) * ambient_visible;
+  Vec3f out = albedo.cwiseProduct(light) * kInvPi;
+  if (look.active()) out += look.sheen(s.normal, view_dir, ambient_visible);
+  return fog.apply(out, row.fog_amount[size_t(u)], view_dir);
 }
 
 }  // namespace
@@ -155,10 +164,13 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
                      " does not match the camera's " + std::to_string(in.camera.width) + "x" +
                      std::to_string(in.camera.height));
   rgb_out.resize(g.size() * 3);
-  const Sky sky(in.preset);
-  const HeightFog fog(in.preset, sky, in.camera.position().cast<float>());
-  const float exposure = exposure_scale(in.preset.exposure_ev);
+  const LightingPreset lit = with_weather(in.preset);
+  const Sky sky(lit);
+  const HeightFog fog(lit, sky, in.camera.position().cast<float>());
+  const WeatherLook look(lit.weather, sky);
+  const float exposure = exposure_multiplier(lit.ev100);
   const uint64_t key = grain_key(in.sequence, in.frame);
+  const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
@@ -171,9 +183,10 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
         radiance[size_t(u)] = g.depth[i] == 0.0f ? sky.radiance(dir)
-                                                 : surface_radiance(in, sky, fog, terms, u, v, dir);
+                                                 : surface_radiance(in, sky, fog, look, terms, u, v, dir);
         if (!grain.empty()) grain[size_t(u)] = film_grain(in.seed, key, i, in.film_grain);
       }
+      if (overlay.active()) overlay.apply_row(v, radiance.data(), g.width);
       encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,
                        &rgb_out[row * 3]);
     }

@@ -27,12 +27,13 @@ struct ShadeCounts {
   uint64_t bare_soil_pixels = 0;  ///< Forest-floor pixels whose bare-soil weight is at least 0.5.
 };
 
-/// Shades every pixel: procedural material albedo lit by the sun (shadow-mapped, back-lit foliage
-/// translucency) and the sky/ground hemisphere (screen-space AO at half resolution, reused
-/// only across pixels of similar depth), through exponential height
-/// fog; sky pixels get the analytic sky. Then exposure, ACES tone mapping, film grain, sRGB.
-/// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
-/// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
+/// Shades every pixel with the preset's weather applied (with_weather): procedural material albedo
+/// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
+/// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
+/// across pixels of similar depth), through exponential height fog; sky pixels get the Preetham /
+/// overcast sky; then falling rain or snow over the RGB, the EV100 exposure, ACES tone mapping,
+/// film grain, sRGB. Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the
+/// caller's TBB arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
 /// Returns the counts of what it shaded.
 ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/shading_noise.hpp"
+#include "render/sky_model.hpp"
 
 namespace silva::render {
 
@@ -12,44 +13,99 @@ constexpr uint32_t kCloudSalt = 0xc10d;
 constexpr uint32_t kStarSalt = 0x57a2;
 constexpr float kCloudPlaneHeight = 1500.0f;  ///< Metres above the camera.
 constexpr float kStarCellsPerRadian = 700.0f;
+constexpr float kStarLuminance = 1e-3f;       ///< kcd/m² of the brightest stars (1 cd/m²).
+constexpr int kSkyRows = 33, kSkyCols = 65;   ///< Clear-sky table size.
+constexpr double kPi = 3.14159265358979323846;
 
 float smoothstep(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return smooth_weight(t);
 }
 
-/// x^(2^k) by repeated squaring (exact sequence of multiplies, no pow).
-float pow2k(float x, int k) {
-  for (int i = 0; i < k; ++i) x *= x;
-  return x;
-}
+/// Below the horizon the sky darkens towards half its horizon value (haze over unseen ground).
+float below_horizon(float z) { return z < 0.0f ? 1.0f - 0.5f * std::min(-z * 4.0f, 1.0f) : 1.0f; }
+
+/// Luminance of a linear sRGB colour.
+double luminance(const Vec3d& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
 }  // namespace
 
 Sky::Sky(const LightingPreset& preset) : preset_(preset) {
   to_sun = sun_direction(preset);
-  // The direct light fades out as it sets, so a preset with the sun just below the horizon has no sun light.
-  sun_radiance = to_vec(preset.sun_color) * (preset.sun_intensity * smoothstep(-0.02f, 0.05f, to_sun.z()));
-  zenith = to_vec(preset.sky_zenith) * preset.sky_intensity;
-  horizon = to_vec(preset.sky_horizon) * preset.sky_intensity;
-  sky_light = (zenith + horizon) * (0.5f * preset.ambient_intensity);
-  ground_light = to_vec(preset.ground_color) * preset.ambient_intensity;
-  const float sun_up = std::clamp(to_sun.z() * 4.0f, 0.0f, 1.0f);
-  cloud_lit_ = to_vec(preset.cloud_color).cwiseProduct(sun_radiance * (0.25f * sun_up) + zenith * 1.2f);
-  const double radius = double(preset.sun_disc_deg) * 0.5 * 3.14159265358979323846 / 180.0;
+  const double elevation = double(preset.sun_elevation_deg) * kPi / 180.0;
+  const double turbidity = double(preset.turbidity);
+  const PreethamSky model(turbidity, elevation);
+  const Vec3d sky_scale = to_vec(preset.sky_tint).cast<double>() * double(preset.sky_intensity);
+  const Vec3d sun_dir = to_sun.cast<double>();
+
+  // Tabulate the clear sky over (s = sqrt(cos θ), t = sin(γ/2)); γ from t, θ from s.
+  table_.resize(size_t(kSkyRows) * size_t(kSkyCols));
+  for (int r = 0; r < kSkyRows; ++r) {
+    const double s = double(r) / (kSkyRows - 1);
+    for (int c = 0; c < kSkyCols; ++c) {
+      const double t = double(c) / (kSkyCols - 1);
+      table_[size_t(r) * kSkyCols + size_t(c)] = model.rgb(s * s, 2.0 * std::asin(t)).cwiseProduct(sky_scale).cast<float>();
+    }
+  }
+
+  // The sun through the atmosphere, then through the clouds; faded out as it sets.
+  const float cover = std::clamp(preset.cloud_cover, 0.0f, 1.0f);
+  const float set_fade = smoothstep(-0.02f, 0.05f, to_sun.z());
+  const Vec3d clear_sun = sun_transmittance(turbidity, elevation) * kSolarIlluminance *
+                          double(preset.sun_intensity * set_fade);
+  sun_illuminance = clear_sun.cwiseProduct(to_vec(preset.sun_tint).cast<double>()).cast<float>() * (1.0f - cover * cover);
+
+  // The overcast that replaces the clear sky: CIE overcast, whose horizontal illuminance is
+  // 7π/9 Lz, lets cloud_transmittance of the clear sky's daylight through.
+  const auto clear_d = [&](const Vec3d& d) -> Vec3d { return clear(d.cast<float>()).cast<double>(); };
+  const Vec3d clear_sky_h = horizontal_irradiance(clear_d);
+  const double clear_day_h = luminance(clear_sun) * std::max(sun_dir.z(), 0.0) + luminance(clear_sky_h);
+  const double overcast_lz = 9.0 / (7.0 * kPi) * double(preset.cloud_transmittance) * clear_day_h;
+  overcast_zenith_ = (to_vec(preset.sky_tint).cast<double>() * overcast_lz).cast<float>();
+
+  Vec3f horizon = Vec3f::Zero();
+  for (int k = 0; k < 16; ++k) {
+    const double phi = 2.0 * kPi * (k + 0.5) / 16.0;
+    horizon += diffuse(Vec3f(float(std::cos(phi)), float(std::sin(phi)), 0.05f).normalized()) * (1.0f / 16.0f);
+  }
+  horizon_radiance = horizon;
+
+  // Ambient: the diffuse sky above, the ground's bounce of everything arriving on it below.
+  const auto diffuse_d = [&](const Vec3d& d) -> Vec3d { return diffuse(d.cast<float>()).cast<double>(); };
+  const Vec3d ground_in = horizontal_irradiance(diffuse_d) + sun_illuminance.cast<double>() * std::max(sun_dir.z(), 0.0);
+  const Vec3d bounce = ground_in.cwiseProduct(to_vec(preset.ground_albedo).cast<double>()) / kPi;
+  ambient_sh = fit_irradiance_sh([&](const Vec3d& d) -> Vec3d { return d.z() > 0.0 ? diffuse_d(d) : bounce; });
+  mean_radiance = ambient_sh.coeffs[0] * float(1.0 / kPi);  // the constant term of the irradiance is π x the mean
+  for (Vec3f& c : ambient_sh.coeffs) c *= preset.ambient_intensity;
+
+  // The disc carries the direct light spread over its solid angle (it clips, as a real sun does).
+  const double radius = double(preset.sun_disc_deg) * 0.5 * kPi / 180.0;
+  disc_radiance_ = Vec3f::Zero();
+  if (radius > 0.0)
+    disc_radiance_ = (clear_sun.cwiseProduct(to_vec(preset.sun_tint).cast<double>()) / (kPi * radius * radius)).cast<float>();
   disc_cos_ = float(std::cos(radius));
   disc_edge_cos_ = float(std::cos(radius * 1.25));
 }
 
-Vec3f Sky::gradient(const Vec3f& dir) const {
-  const float up = std::max(dir.z(), 0.0f);
-  const float h = 1.0f - up;
-  const float to_horizon = h * h * h;
-  Vec3f c = zenith + (horizon - zenith) * to_horizon;
-  if (dir.z() < 0.0f) c *= 1.0f - 0.5f * std::min(-dir.z() * 4.0f, 1.0f);
-  const float cs = std::max(dir.dot(to_sun), 0.0f);
-  const float glow = preset_.sun_glow * (0.06f * pow2k(cs, 3) + 0.5f * pow2k(cs, 6)) * (1.0f - preset_.moon);
-  const float horizon_glow = preset_.sun_glow * 0.25f * cs * cs * to_horizon * (1.0f - preset_.moon);
-  return c + sun_radiance * (glow + horizon_glow);
+Vec3f Sky::clear(const Vec3f& dir) const {
+  const float s = std::sqrt(std::clamp(dir.z(), 0.0f, 1.0f)) * float(kSkyRows - 1);
+  const float t = std::sqrt(std::clamp(0.5f - 0.5f * dir.dot(to_sun), 0.0f, 1.0f)) * float(kSkyCols - 1);
+  const int r0 = std::min(int(s), kSkyRows - 2), c0 = std::min(int(t), kSkyCols - 2);
+  const float fr = s - float(r0), fc = t - float(c0);
+  const Vec3f* row0 = &table_[size_t(r0) * kSkyCols + size_t(c0)];
+  const Vec3f* row1 = row0 + kSkyCols;
+  const Vec3f a = row0[0] + (row0[1] - row0[0]) * fc;
+  const Vec3f b = row1[0] + (row1[1] - row1[0]) * fc;
+  return (a + (b - a) * fr) * below_horizon(dir.z());
+}
+
+Vec3f Sky::overcast(const Vec3f& dir) const {
+  const float z = std::max(dir.z(), 0.0f);
+  return overcast_zenith_ * ((1.0f + 2.0f * z) * (1.0f / 3.0f) * below_horizon(dir.z()));
+}
+
+Vec3f Sky::diffuse(const Vec3f& dir) const {
+  const Vec3f c = clear(dir);
+  return c + (overcast(dir) - c) * std::clamp(preset_.cloud_cover, 0.0f, 1.0f);
 }
 
 float Sky::cloud_density(const Vec3f& dir) const {
@@ -67,29 +123,29 @@ float Sky::star(const Vec3f& dir) const {
   const int32_t z = int32_t(std::floor(dir.z() * kStarCellsPerRadian));
   const float v = lattice_value(lattice_hash(x, y, z, kStarSalt));
   if (v >= preset_.star_density) return 0.0f;
-  return (0.02f + 0.3f * pow2k(v / preset_.star_density, 2)) * smoothstep(0.0f, 0.15f, dir.z());
+  const float relative = v / preset_.star_density;
+  return kStarLuminance * (0.06f + 0.94f * relative * relative) * smoothstep(0.0f, 0.15f, dir.z());
 }
 
 Vec3f Sky::radiance(const Vec3f& dir) const {
-  Vec3f c = gradient(dir);
+  Vec3f c = diffuse(dir) + Vec3f::Constant(star(dir));
   const float cs = dir.dot(to_sun);
-  if (cs > disc_edge_cos_) {
-    const float disc = smoothstep(disc_edge_cos_, disc_cos_, cs);
-    const Vec3f disc_col = to_vec(preset_.sun_color) * preset_.sun_disc_intensity;
-    c += (disc_col - c) * disc;
-  }
-  c += Vec3f::Constant(star(dir));
+  const float cover = std::clamp(preset_.cloud_cover, 0.0f, 1.0f);
   const float cloud = cloud_density(dir);
   if (cloud > 0.0f) {
-    const float lit = 0.75f + 0.25f * std::max(cs, 0.0f);
-    c += (cloud_lit_ * lit * (1.1f - 0.35f * cloud) - c) * (0.95f * cloud);
+    // Cloud bases are the overcast's light; broken clouds are brighter, with a sunlit rim towards the sun.
+    const float open = 1.0f - cover;
+    const float towards = std::max(cs, 0.0f);
+    const Vec3f lit = overcast(dir) * (1.0f + 1.5f * open * (0.6f + 0.4f * towards)) +
+                      sun_illuminance * (0.02f * open * towards * towards);
+    c += (to_vec(preset_.cloud_color).cwiseProduct(lit) * (1.1f - 0.35f * cloud) - c) * (0.95f * cloud);
+  }
+  // The disc shows where no cloud hides it, dimmed as the cover thickens (none under an overcast).
+  if (cs > disc_edge_cos_ && to_sun.z() > -0.02f) {
+    const float visible = (1.0f - cover * cover) * (1.0f - cloud);
+    c += (disc_radiance_ * visible - c) * (smoothstep(disc_edge_cos_, disc_cos_, cs) * visible);
   }
   return c;
-}
-
-Vec3f Sky::ambient(const Vec3f& n) const {
-  const float up = 0.5f + 0.5f * n.z();
-  return ground_light + (sky_light - ground_light) * up;
 }
 
 }  // namespace silva::render

@@ -7,13 +7,17 @@
 
 namespace silva::render {
 
+namespace {
+constexpr float kInvPi = 0.318309886183790672f;
+}  // namespace
+
 HeightFog::HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& camera_position)
     : sky_(sky),
       params_{camera_position, std::max(preset.fog_height_falloff, 0.0f),
               float(double(preset.fog_density) *
                     det_exp(-double(preset.fog_height_falloff) * double(camera_position.z() - preset.fog_height)))},
-      fog_color_(to_vec(preset.fog_color) * preset.sky_intensity),
-      sun_scatter_(preset.fog_sun_scatter) {}
+      in_scatter_(to_vec(preset.fog_tint).cwiseProduct(sky.mean_radiance + sky.sun_illuminance * (0.25f * kInvPi))),
+      sun_scatter_(to_vec(preset.fog_tint).cwiseProduct(sky.sun_illuminance) * (0.3f * kInvPi * preset.fog_sun_scatter)) {}
 
 float HeightFog::amount(const Vec3f& point) const {
   float a = 0.0f;
@@ -26,10 +30,7 @@ Vec3f HeightFog::color(const Vec3f& dir) const {
   float toward = cs * cs;
   toward *= toward;
   toward *= toward;
-  const Vec3f level_dir = Vec3f(dir.x(), dir.y(), 0.0f);
-  const Vec3f horizon = sky_.gradient(level_dir.squaredNorm() > 0.0f ? level_dir.normalized() : dir);
-  const Vec3f base = fog_color_ + (horizon - fog_color_) * 0.5f;
-  return base + sky_.sun_radiance * (0.3f * sun_scatter_ * toward);
+  return in_scatter_ + sun_scatter_ * toward;
 }
 
 Vec3f HeightFog::apply(const Vec3f& surface, float f, const Vec3f& dir) const {

@@ -16,7 +16,8 @@ struct HeightFog {
   float amount(const Vec3f& point) const;
   /// amount() of `count` points at once into `out` (SIMD lanes; the same values).
   void amounts(const Vec3f* points, size_t count, float* out) const { fog_amounts(params_, points, count, out); }
-  /// Fog colour along unit view direction `dir`: horizon-matched, warmed towards the sun.
+  /// Fog radiance along unit view direction `dir`: the light arriving from all directions (sky,
+  /// ground bounce, sun) scattered evenly, plus a forward lobe towards the sun; times fog_tint.
   Vec3f color(const Vec3f& dir) const;
   /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
   Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;
@@ -24,8 +25,8 @@ struct HeightFog {
  private:
   const Sky& sky_;
   FogAmountParams params_;  ///< Camera, falloff and density at the camera height.
-  Vec3f fog_color_;
-  float sun_scatter_;
+  Vec3f in_scatter_;   ///< Isotropic in-scattered radiance, kcd/m².
+  Vec3f sun_scatter_;  ///< Peak of the forward lobe towards the sun, kcd/m².
 };
 
 }  // namespace silva::render

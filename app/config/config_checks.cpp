@@ -42,6 +42,14 @@ std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded) {
   return names;
 }
 
+std::vector<std::string> weather_preset_names(const LoadedConfig& loaded) {
+  std::vector<std::string> names;
+  for (const auto& [name, weather] : parse_weather_tables(loaded.weather_presets, loaded.source)) {
+    names.push_back(name);
+  }
+  return names;
+}
+
 void check_config(const LoadedConfig& loaded) {
   const Config& c = loaded.config;
   const std::string where = loaded.source.empty() ? std::string("config") : loaded.source;
@@ -82,6 +90,13 @@ void check_config(const LoadedConfig& loaded) {
     throw InputError(where + ": lighting.time_of_day = \"" + c.lighting.time_of_day +
                      "\" is not a preset (allowed: " + allowed +
                      ", or define [lighting.presets." + c.lighting.time_of_day + "])");
+  }
+  const std::vector<std::string> weathers = weather_preset_names(loaded);
+  if (!contains(weathers, c.lighting.weather)) {
+    std::string allowed;
+    for (const std::string& name : weathers) allowed += (allowed.empty() ? "" : ", ") + name;
+    throw InputError(where + ": lighting.weather = \"" + c.lighting.weather + "\" is not a weather preset (allowed: " +
+                     allowed + ", or define [lighting.weather_presets." + c.lighting.weather + "])");
   }
 }
 

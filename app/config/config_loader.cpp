@@ -18,6 +18,7 @@ namespace silva::app {
 namespace {
 
 constexpr std::string_view kPresetsTable = "lighting.presets";
+constexpr std::string_view kWeathersTable = "lighting.weather_presets";
 
 /// "file:line:column" of a node parsed from a file.
 std::string node_location(const std::string& source, const toml::node& node) {
@@ -57,6 +58,13 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       }
       parse_preset_tables(*node.as_table(), loaded.source);  // checks every field where its source is known
       loaded.lighting_presets = *node.as_table();
+    } else if (name == kWeathersTable) {
+      if (!node.is_table()) {
+        throw InputError(where + ": lighting.weather_presets must hold tables [lighting.weather_presets.<name>], got " +
+                         describe_node(node));
+      }
+      parse_weather_tables(*node.as_table(), loaded.source);
+      loaded.weather_presets = *node.as_table();
     } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {

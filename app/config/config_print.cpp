@@ -115,6 +115,10 @@ std::string config_to_toml(const LoadedConfig& loaded) {
     out << "\n[lighting.presets." << toml_key(name.str()) << "]\n";
     if (const auto* table = preset.as_table()) print_table_entries(out, *table, "");
   }
+  for (const auto& [name, weather] : loaded.weather_presets) {
+    out << "\n[lighting.weather_presets." << toml_key(name.str()) << "]\n";
+    if (const auto* table = weather.as_table()) print_table_entries(out, *table, "");
+  }
   return out.str();
 }
 
@@ -129,6 +133,11 @@ nlohmann::json config_to_json(const LoadedConfig& loaded) {
     std::ostringstream presets;
     presets << toml::json_formatter{loaded.lighting_presets};
     out["lighting"]["presets"] = nlohmann::json::parse(presets.str());
+  }
+  if (!loaded.weather_presets.empty()) {
+    std::ostringstream weathers;
+    weathers << toml::json_formatter{loaded.weather_presets};
+    out["lighting"]["weather_presets"] = nlohmann::json::parse(weathers.str());
   }
   return out;
 }

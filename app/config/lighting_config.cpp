@@ -12,7 +12,30 @@ namespace silva::app {
 namespace {
 
 using render::LightingPreset;
-using render::PresetField;
+using render::PresetFieldOf;
+using render::WeatherPreset;
+
+/// What differs between the two kinds of preset table.
+template <class T>
+struct PresetKind;
+
+/// Times of day: [lighting.presets.<name>].
+template <>
+struct PresetKind<LightingPreset> {
+  static constexpr const char* table = "lighting.presets";  ///< Where the tables live.
+  static constexpr const char* base = "day";                ///< What a new name starts from.
+  static auto fields() { return render::preset_fields(); }      ///< The table's keys.
+  static auto builtins() { return render::builtin_presets(); }  ///< What the tables overlay.
+};
+
+/// Weathers: [lighting.weather_presets.<name>].
+template <>
+struct PresetKind<WeatherPreset> {
+  static constexpr const char* table = "lighting.weather_presets";
+  static constexpr const char* base = "clear";
+  static auto fields() { return render::weather_fields(); }      ///< The table's keys.
+  static auto builtins() { return render::builtin_weathers(); }  ///< What the tables overlay.
+};
 
 /// "file:line:col" of a node when toml++ knows it, else just the file.
 std::string where(const std::string& file, const toml::node& node) {
@@ -21,10 +44,11 @@ std::string where(const std::string& file, const toml::node& node) {
   return file + ":" + std::to_string(src.begin.line) + ":" + std::to_string(src.begin.column);
 }
 
-/// Comma-separated names of every preset field.
+/// Comma-separated names of every field of T.
+template <class T>
 std::string allowed_keys() {
   std::string out;
-  for (const PresetField& f : render::preset_fields()) out += (out.empty() ? "" : ", ") + std::string(f.name);
+  for (const PresetFieldOf<T>& f : PresetKind<T>::fields()) out += (out.empty() ? "" : ", ") + std::string(f.name);
   return out;
 }
 
@@ -36,7 +60,8 @@ float read_number(const toml::node& node, const std::string& key, const std::str
 }
 
 /// Checks one value against the field's range.
-void check_range(float v, const PresetField& f, const std::string& key, const std::string& at) {
+template <class T>
+void check_range(float v, const PresetFieldOf<T>& f, const std::string& key, const std::string& at) {
   if (!std::isfinite(v) || v < f.min || v > f.max) {
     std::ostringstream msg;
     msg << at << ": " << key << " = " << v << " is out of range, allowed " << f.min << " .. " << f.max;
@@ -45,7 +70,8 @@ void check_range(float v, const PresetField& f, const std::string& key, const st
 }
 
 /// Sets one field of `preset` from its TOML value.
-void assign_field(LightingPreset& preset, const PresetField& f, const toml::node& node, const std::string& key,
+template <class T>
+void assign_field(T& preset, const PresetFieldOf<T>& f, const toml::node& node, const std::string& key,
                   const std::string& at) {
   if (f.scalar) {
     const float v = read_number(node, key, at, "a number");
@@ -65,62 +91,91 @@ void assign_field(LightingPreset& preset, const PresetField& f, const toml::node
 }
 
 /// Applies every key of one preset table on top of `preset`.
-void apply_table(LightingPreset& preset, const toml::table& table, const std::string& name, const std::string& file) {
-  const auto fields = render::preset_fields();
+template <class T>
+void apply_table(T& preset, const toml::table& table, const std::string& name, const std::string& file) {
   for (const auto& [k, node] : table) {
-    const std::string key = "lighting.presets." + name + "." + std::string(k.str());
-    const PresetField* field = nullptr;
-    for (const PresetField& f : fields)
+    const std::string key = std::string(PresetKind<T>::table) + "." + name + "." + std::string(k.str());
+    const PresetFieldOf<T>* field = nullptr;
+    for (const PresetFieldOf<T>& f : PresetKind<T>::fields())
       if (k.str() == f.name) field = &f;
     if (!field)
-      throw InputError(where(file, node) + ": unknown key " + key + "; allowed keys: " + allowed_keys());
+      throw InputError(where(file, node) + ": unknown key " + key + "; allowed keys: " + allowed_keys<T>());
     assign_field(preset, *field, node, key, where(file, node));
   }
 }
 
-}  // namespace
-
-std::map<std::string, LightingPreset> parse_preset_tables(const toml::table& presets, const std::string& file) {
-  std::map<std::string, LightingPreset> out = render::builtin_presets();
-  const LightingPreset day = out.at("day");
+/// The built-ins of kind T overlaid with the tables of `presets`.
+template <class T>
+std::map<std::string, T> parse_tables(const toml::table& presets, const std::string& file) {
+  std::map<std::string, T> out = PresetKind<T>::builtins();
+  const T base = out.at(PresetKind<T>::base);
+  const std::string table_name = PresetKind<T>::table;
   for (const auto& [k, node] : presets) {
     const std::string name(k.str());
     const auto* table = node.as_table();
     if (!table)
-      throw InputError(where(file, node) + ": lighting.presets." + name + " must be a table [lighting.presets." + name +
-                       "], got " + describe_node(node));
+      throw InputError(where(file, node) + ": " + table_name + "." + name + " must be a table [" + table_name + "." +
+                       name + "], got " + describe_node(node));
     const auto builtin = out.find(name);
-    LightingPreset preset = builtin != out.end() ? builtin->second : day;
+    T preset = builtin != out.end() ? builtin->second : base;
     apply_table(preset, *table, name, file);
     out[name] = preset;
   }
   return out;
 }
 
-std::map<std::string, LightingPreset> parse_lighting_presets(const toml::table& root, const std::string& file) {
+/// The built-ins of kind T overlaid with the tables under `lighting.<leaf>` of `root`.
+template <class T>
+std::map<std::string, T> parse_root(const toml::table& root, const std::string& file, const char* leaf) {
   const toml::node* lighting = root.get("lighting");
-  if (!lighting) return render::builtin_presets();
+  if (!lighting) return PresetKind<T>::builtins();
   if (!lighting->is_table())
     throw InputError(where(file, *lighting) + ": lighting must be a table, got " + describe_node(*lighting));
-  const toml::node* presets = lighting->as_table()->get("presets");
-  if (!presets) return render::builtin_presets();
+  const toml::node* presets = lighting->as_table()->get(leaf);
+  if (!presets) return PresetKind<T>::builtins();
+  const std::string table_name = PresetKind<T>::table;
   if (!presets->is_table())
-    throw InputError(where(file, *presets) + ": lighting.presets must hold tables [lighting.presets.<name>], got " +
-                     describe_node(*presets));
-  return parse_preset_tables(*presets->as_table(), file);
+    throw InputError(where(file, *presets) + ": " + table_name + " must hold tables [" + table_name +
+                     ".<name>], got " + describe_node(*presets));
+  return parse_tables<T>(*presets->as_table(), file);
 }
 
-std::map<std::string, LightingPreset> load_lighting_presets(const std::string& path) {
+/// Parses a whole lighting file.
+toml::table read_lighting_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path + ": cannot read the lighting file");
-  toml::table root;
   try {
-    root = toml::parse_file(path);
+    return toml::parse_file(path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": invalid TOML: " +
                      std::string(e.description()));
   }
-  return parse_lighting_presets(root, path);
+}
+
+}  // namespace
+
+std::map<std::string, LightingPreset> parse_preset_tables(const toml::table& presets, const std::string& file) {
+  return parse_tables<LightingPreset>(presets, file);
+}
+
+std::map<std::string, LightingPreset> parse_lighting_presets(const toml::table& root, const std::string& file) {
+  return parse_root<LightingPreset>(root, file, "presets");
+}
+
+std::map<std::string, WeatherPreset> parse_weather_tables(const toml::table& weathers, const std::string& file) {
+  return parse_tables<WeatherPreset>(weathers, file);
+}
+
+std::map<std::string, WeatherPreset> parse_lighting_weathers(const toml::table& root, const std::string& file) {
+  return parse_root<WeatherPreset>(root, file, "weather_presets");
+}
+
+std::map<std::string, LightingPreset> load_lighting_presets(const std::string& path) {
+  return parse_lighting_presets(read_lighting_file(path), path);
+}
+
+std::map<std::string, WeatherPreset> load_lighting_weathers(const std::string& path) {
+  return parse_lighting_weathers(read_lighting_file(path), path);
 }
 
 }  // namespace silva::app

@@ -17,6 +17,8 @@ struct LoadedConfig {
   std::string source;            ///< The config file as given, "" for the built-in defaults.
   toml::table lighting_presets;  ///< The config's [lighting.presets.<name>] tables, as written
                                  ///< (already checked by parse_preset_tables).
+  toml::table weather_presets;   ///< The config's [lighting.weather_presets.<name>] tables, as written
+                                 ///< (already checked by parse_weather_tables).
 };
 
 }  // namespace silva::app

@@ -17,23 +17,46 @@ namespace silva::app {
 namespace fs = std::filesystem;
 
 namespace {
-/// Every preset a config can select: built-in, then lighting.toml, then the config's own tables.
-std::map<std::string, render::LightingPreset> load_presets(const LoadedConfig& loaded, const fs::path& lighting_toml) {
-  auto presets = render::builtin_presets();
+/// Every preset of one kind a config can select: lighting.toml's (over the built-ins), then the
+/// config's own `own` tables; `parse` is parse_lighting_presets or parse_lighting_weathers.
+template <class Parse>
+auto load_presets(const toml::table& file, const fs::path& lighting_toml, const LoadedConfig& loaded,
+                  const toml::table& own, const char* leaf, Parse parse) {
+  auto presets = parse(file, lighting_toml.string());
+  if (!own.empty()) {
+    toml::table root;
+    root.insert("lighting", toml::table{{leaf, own}});
+    const std::string source = loaded.source.empty() ? "--set" : loaded.source;
+    for (auto& [name, preset] : parse(root, source)) presets[name] = preset;
+  }
+  return presets;
+}
+
+/// The preset lighting.time_of_day names with the weather lighting.weather names.
+render::LightingPreset selected_preset(const LoadedConfig& loaded, const fs::path& lighting_toml) {
   toml::table file;
   try {
     file = toml::parse_file(lighting_toml.string());
   } catch (const toml::parse_error& e) {
     throw InputError(lighting_toml.string() + ": " + std::string(e.description()));
   }
-  for (auto& [name, preset] : parse_lighting_presets(file, lighting_toml.string())) presets[name] = preset;
-  if (!loaded.lighting_presets.empty()) {
-    toml::table root;
-    root.insert("lighting", toml::table{{"presets", loaded.lighting_presets}});
-    const std::string source = loaded.source.empty() ? "--set" : loaded.source;
-    for (auto& [name, preset] : parse_lighting_presets(root, source)) presets[name] = preset;
-  }
-  return presets;
+  const auto presets =
+      load_presets(file, lighting_toml, loaded, loaded.lighting_presets, "presets", parse_lighting_presets);
+  const auto weathers =
+      load_presets(file, lighting_toml, loaded, loaded.weather_presets, "weather_presets", parse_lighting_weathers);
+  const LightingConfig& choice = loaded.config.lighting;
+  const auto it = presets.find(choice.time_of_day);
+  if (it == presets.end())
+    throw InputError("lighting.time_of_day: no preset named \"" + choice.time_of_day + "\"; define [lighting.presets." +
+                     choice.time_of_day + "] or use day, dusk, night");
+  const auto weather = weathers.find(choice.weather);
+  if (weather == weathers.end())
+    throw InputError("lighting.weather: no weather preset named \"" + choice.weather +
+                     "\"; define [lighting.weather_presets." + choice.weather +
+                     "] or use clear, overcast, mist, rain, snow");
+  render::LightingPreset preset = it->second;
+  preset.weather = weather->second;
+  return preset;
 }
 }  // namespace
 
@@ -53,12 +76,7 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   setup.lighting_toml = data_path("configs/lighting.toml");
   setup.library_json = asset_library_path();
   setup.ontology = io::load_ontology(setup.ontology_json);
-  const auto presets = load_presets(loaded, setup.lighting_toml);
-  const auto it = presets.find(loaded.config.lighting.time_of_day);
-  if (it == presets.end())
-    throw InputError("lighting.time_of_day: no preset named \"" + loaded.config.lighting.time_of_day +
-                     "\"; define [lighting.presets." + loaded.config.lighting.time_of_day + "] or use day, dusk, night");
-  setup.preset = it->second;
+  setup.preset = selected_preset(loaded, setup.lighting_toml);
   Season season = Season::Summer;
   parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
   setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));

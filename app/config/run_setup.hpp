@@ -18,7 +18,7 @@ struct RunSetup {
   std::unique_ptr<assets::AssetLibrary> library;  ///< Placeable assets.
   world::WorldContext world;                      ///< Config, terrain, trail, asset tables.
   Ontology ontology;                              ///< Class ids, names, colours.
-  render::LightingPreset preset;                  ///< The preset lighting.time_of_day names.
+  render::LightingPreset preset;                  ///< The preset lighting.time_of_day names, with lighting.weather's weather.
   std::filesystem::path library_json;             ///< The asset library manifest used.
   std::filesystem::path lighting_toml;            ///< The lighting presets file used.
   std::filesystem::path ontology_json;            ///< The ontology file used.

@@ -71,6 +71,10 @@ TEST(ConfigChecks, TimeOfDayNamesAPreset) {
             "a.toml: lighting.time_of_day = \"noon\" is not a preset (allowed: day, dusk, night, "
             "or define [lighting.presets.noon])");
   EXPECT_EQ(check_message([](Config& c) { c.lighting.time_of_day = "night"; }), "");
+  EXPECT_EQ(check_message([](Config& c) { c.lighting.weather = "hail"; }),
+            "a.toml: lighting.weather = \"hail\" is not a weather preset (allowed: clear, mist, overcast, rain, snow, "
+            "or define [lighting.weather_presets.hail])");
+  EXPECT_EQ(check_message([](Config& c) { c.lighting.weather = "snow"; }), "");
 }
 
 TEST(ConfigChecks, OutputDirIsSet) {

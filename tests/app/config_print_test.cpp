@@ -37,7 +37,8 @@ TEST(ConfigPrint, TomlRoundTripsEveryValue) {
 TEST(ConfigPrint, TomlHasEveryKeyAndUserPresets) {
   const LoadedConfig loaded = parse_config_text(
       "[lighting]\ntime_of_day = \"my noon\"\n[lighting.presets.\"my noon\"]\n"
-      "sun_color = [0.5, 1, 0.25]\nfog_density = 0.02\n",
+      "sun_tint = [0.5, 1, 0.25]\nfog_density = 0.02\n"
+      "[lighting.weather_presets.drizzle]\nwetness = 0.4\nrain_streaks = 0.1\n",
       "a.toml");
   const std::string text = config_to_toml(loaded);
   for (const ConfigKey& key : config_schema()) {
@@ -46,6 +47,8 @@ TEST(ConfigPrint, TomlHasEveryKeyAndUserPresets) {
   const LoadedConfig again = parse_config_text(text, "printed");
   EXPECT_EQ(again.config.lighting.time_of_day, "my noon");
   EXPECT_EQ(again.lighting_presets, loaded.lighting_presets) << text;
+  EXPECT_EQ(again.weather_presets, loaded.weather_presets) << text;
+  EXPECT_FALSE(again.weather_presets.empty());
 }
 
 TEST(ConfigPrint, JsonIsNestedBySection) {

@@ -11,7 +11,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
   std::set<std::string_view> names;
   for (const ConfigKey& key : config_schema()) EXPECT_TRUE(names.insert(key.name).second) << key.name;
   for (std::string_view name :
-       {"seed", "output.dir", "output.resolution", "output.types", "lighting.time_of_day",
+       {"seed", "output.dir", "output.resolution", "output.types", "lighting.time_of_day", "lighting.weather",
         "captures.sequences", "captures.random_count", "captures.autopilot_points",
         "captures.autopilot_yaws", "captures.aerial", "captures.poses_file", "camera.fov_deg",
         "camera.near", "camera.far", "camera.ground_height", "camera.aerial_height",
@@ -23,7 +23,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 40u);
+  EXPECT_EQ(names.size(), 41u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 
