@@ -1,5 +1,5 @@
 // Shading benchmarks: shade_rgb at 1920x1080 on a synthetic G-buffer (ground plane, trunk
-// columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and grain parts.
+// columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and sensor-noise draws.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -83,10 +83,11 @@ void BM_ShadeRgb(benchmark::State& state) {
   const Scene& s = scene();
   LightingPreset preset = preset_day();
   preset.sun_elevation_deg = 70;
+  const CameraModel model = camera_model(CameraConfig{}, s.camera);
   std::vector<uint8_t> rgb;
   tbb::task_arena arena(int(state.range(0)));
   for (auto _ : state) {
-    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, 0.015f}, rgb); });
+    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, model}, rgb); });
     benchmark::DoNotOptimize(rgb.data());
   }
   state.counters["threads"] = double(state.range(0));
@@ -109,15 +110,15 @@ void BM_ScreenSpaceAo(benchmark::State& state) {
 }
 BENCHMARK(BM_ScreenSpaceAo)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_FilmGrain(benchmark::State& state) {
-  const uint64_t key = grain_key("random", 0);
+void BM_SensorNormals(benchmark::State& state) {
+  const uint64_t key = noise_key("random", 0);
   for (auto _ : state) {
     Vec3f sum = Vec3f::Zero();
-    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) sum += film_grain(1, key, i, 0.015f);
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) sum += sensor_normals(1, key, i);
     benchmark::DoNotOptimize(sum);
   }
   state.counters["pixels"] = double(kWidth) * kHeight;
 }
-BENCHMARK(BM_FilmGrain)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SensorNormals)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
