@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -149,7 +150,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   if (whole_frame) frame.resize(g.width, g.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     RowTerms terms(g.width);
-    RowEncoder encoder(in.camera, in.model, exposure, in.seed, key);
+    std::optional<RowEncoder> encoder;  // encodes each row as it is shaded, unless the optics need the frame
+    if (!whole_frame) encoder.emplace(in.camera, in.model, exposure, in.seed, key);
     std::vector<Vec3f> row_radiance(whole_frame ? 0 : size_t(g.width));
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
@@ -160,7 +162,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
         radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, terms, half_ao, u, v, dir);
       }
-      if (!whole_frame) encoder.encode(v, radiance->data(), &rgb_out[row * 3]);
+      if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     }
     bare_soil += terms.bare_soil;
   });

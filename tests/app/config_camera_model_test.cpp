@@ -44,12 +44,17 @@ TEST(ConfigCameraModel, OutOfRangeValuesNameKeyAndRange) {
 }
 
 TEST(ConfigCameraModel, FocusMustLieBeyondTheFocalLength) {
-  // 90 degrees across a 100 mm sensor: a 50 mm lens.
-  EXPECT_EQ(load_message({"camera.depth_of_field=true", "camera.sensor_width_mm=100", "camera.focus_distance=0.1",
-                          "camera.fov_deg=90"}),
-            "config: camera.focus_distance = 0.1 must exceed the lens's focal length, 0.05 m (from "
-            "camera.sensor_width_mm and camera.fov_deg)");
-  EXPECT_EQ(load_message({"camera.depth_of_field=false", "camera.sensor_width_mm=100", "camera.focus_distance=0.1"}),
+  // 10 degrees across a 100 mm sensor: a 0.1 / (2 tan 5 deg) = 0.5715 m lens.
+  const std::string message = load_message({"camera.depth_of_field=true", "camera.sensor_width_mm=100",
+                                            "camera.focus_distance=0.5", "camera.fov_deg=10"});
+  EXPECT_EQ(message.rfind("config: camera.focus_distance = 0.5 must exceed the lens's focal length, 0.571", 0), 0u)
+      << message;
+  EXPECT_TRUE(message.ends_with(" m (from camera.sensor_width_mm and camera.fov_deg)")) << message;
+  EXPECT_EQ(load_message({"camera.depth_of_field=true", "camera.sensor_width_mm=100", "camera.focus_distance=0.6",
+                          "camera.fov_deg=10"}),
+            "");
+  EXPECT_EQ(load_message({"camera.depth_of_field=false", "camera.sensor_width_mm=100", "camera.focus_distance=0.5",
+                          "camera.fov_deg=10"}),
             "");
 }
 

@@ -57,8 +57,9 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
     ASSERT_EQ(rgb.size(), 3u);
     for (const auto& [path, bytes] : rgb) EXPECT_NE(bytes, plain.at(path)) << path;
     // Motion blur is the autopilot's: random frames are still.
-    if (name == "motion_blur")
+    if (name == "motion_blur") {
       EXPECT_EQ(file_differences(under(files, {"random/rgb/"}), under(plain, {"random/rgb/"})), "");
+    }
     const auto camera = nlohmann::json::parse(files.at("autopilot/camera/000000.json"))["camera_model"];
     EXPECT_EQ(camera["noise"].is_null(), name != "noise");
     EXPECT_EQ(camera["depth_of_field"].is_null(), name != "depth_of_field");

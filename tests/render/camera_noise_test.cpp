@@ -2,6 +2,7 @@
 // the shot + read noise model propagated through the tone curve and sRGB by this test's own formulas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -41,29 +42,24 @@ TEST(CameraNoise, DrawsRepeatPerFrameAndDifferAcrossFrames) {
   EXPECT_GT(differ, 990);
 }
 
-/// The output code of a display-linear value by the sRGB formula (IEC 61966-2-1), rounded.
-double srgb_code(double c) {
-  c = std::clamp(c, 0.0, 1.0);
-  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return std::round(255.0 * s);
-}
-
 /// Narkowicz's ACES fit.
 double aces(double x) {
   x = std::max(x, 0.0);
   return std::min(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 1.0);
 }
 
-/// The exposed linear value whose noiseless code is about `code` (bisection on the formulas).
+/// The unrounded 8-bit sRGB code of exposed linear value x: 255 * sRGB(ACES(x)) (IEC 61966-2-1).
+double exact_code(double x) {
+  const double c = std::clamp(aces(x), 0.0, 1.0);
+  return 255.0 * (c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055);
+}
+
+/// The exposed linear value whose noiseless code is `code` (bisection on the formulas).
 double level_for_code(double code) {
   double lo = 0, hi = 20;
   for (int i = 0; i < 80; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (255.0 * (mid > 0 ? (aces(mid) <= 0.0031308 ? 12.92 * aces(mid) : 1.055 * std::pow(aces(mid), 1 / 2.4) - 0.055)
-                      : 0.0) <
-     code)
-        ? lo = mid
-        : hi = mid;
+    (exact_code(mid) < code ? lo : hi) = mid;
   }
   return lo;
 }
@@ -77,7 +73,7 @@ double model_sigma(double x, const SensorNoise& s) {
   double w_sum = 0, m1 = 0, m2 = 0;
   for (int k = -4000; k <= 4000; ++k) {
     const double z = k * 0.0015, w = std::exp(-0.5 * z * z);
-    const double code = srgb_code(aces(x + sigma * z));
+    const double code = std::round(exact_code(x + sigma * z));
     w_sum += w;
     m1 += w * code;
     m2 += w * code * code;
@@ -121,18 +117,18 @@ TEST(CameraNoise, GreyCardsFollowTheShotAndReadNoiseModel) {
   }
 }
 
-TEST(CameraNoise, NoiseGrowsWithTheSignalInElectrons) {
-  // Shot noise: sigma in linear units grows as sqrt(signal), so a bright card is noisier in
-  // linear terms than a dark one (the additive grain it replaced was the same everywhere).
-  CameraModel model;
-  model.noise = SensorNoise{1000, 0, 1};
-  EXPECT_GT(model_sigma(0.5, *model.noise), 0.0);
-  const auto dark = card_codes(model, 0.01f), bright = card_codes(model, 0.5f);
-  EXPECT_GT(dark.second, 0.5);
-  EXPECT_GT(bright.second, 0.5);
-  CameraModel read_only;
-  read_only.noise = SensorNoise{1000, 20, 1};
-  EXPECT_GT(card_codes(read_only, 0.01f).second, dark.second);  // read noise dominates dark areas
+TEST(CameraNoise, ReadNoiseRulesTheDarkAndShotNoiseTheBright) {
+  const auto sigma = [](const SensorNoise& sensor, float x) {
+    CameraModel model;
+    model.noise = sensor;
+    return card_codes(model, x).second;
+  };
+  // Read noise matters where there are few electrons, hardly at all where there are many.
+  EXPECT_GT(sigma({1000, 20, 1}, 0.01f), 1.5 * sigma({1000, 0, 1}, 0.01f));
+  EXPECT_LT(sigma({1000, 20, 1}, 0.5f), 1.2 * sigma({1000, 0, 1}, 0.5f));
+  // A deeper well (or lower gain) is quieter: shot noise relative to the signal falls as 1 / sqrt(e).
+  EXPECT_NEAR(sigma({1000, 0, 1}, 0.5f) / sigma({4000, 0, 1}, 0.5f), 2.0, 0.2);
+  EXPECT_NEAR(sigma({4000, 0, 4}, 0.5f), sigma({1000, 0, 1}, 0.5f), 1e-9);
 }
 
 TEST(CameraNoise, DarkAreasStayWithinFiveCodesAtTheDefaults) {

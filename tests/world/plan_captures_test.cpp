@@ -219,8 +219,9 @@ TEST(PlanCaptures, AutopilotMotionSpansSpeedTimesShutterAlongTheTrail) {
     const double s = *f.trail_s;
     const double span = std::min(s + 0.05, length) - std::max(s - 0.05, 0.0);  // kept within the trail
     EXPECT_NEAR((close - open).norm(), span, 0.01 * span) << f.frame;
-    if (s > 0.05 && s < length - 0.05)  // the frame's pose is the middle of the exposure
+    if (s > 0.05 && s < length - 0.05) {  // the frame's pose is the middle of the exposure
       EXPECT_NEAR((0.5 * (open + close) - f.camera.position()).norm(), 0.0, 2e-3) << f.frame;
+    }
     // The camera looks the same way relative to the trail: its forward axis barely turns.
     const Vec3d forward = f.camera.camera_to_world.block<3, 1>(0, 2);
     EXPECT_GT(forward.dot(m.open_to_world.block<3, 1>(0, 2)), 0.999);
