@@ -124,8 +124,9 @@ TEST(CameraNoise, ReadNoiseRulesTheDarkAndShotNoiseTheBright) {
     return card_codes(model, x).second;
   };
   // Read noise matters where there are few electrons, hardly at all where there are many.
-  EXPECT_GT(sigma({1000, 20, 1}, 0.01f), 1.5 * sigma({1000, 0, 1}, 0.01f));
-  EXPECT_LT(sigma({1000, 20, 1}, 0.5f), 1.2 * sigma({1000, 0, 1}, 0.5f));
+  // 20 e- of read noise against 100 e- of signal (variance 5x) and against 5 000 e- (1.08x).
+  EXPECT_GT(sigma({10000, 20, 1}, 0.01f), 1.5 * sigma({10000, 0, 1}, 0.01f));
+  EXPECT_LT(sigma({10000, 20, 1}, 0.5f), 1.2 * sigma({10000, 0, 1}, 0.5f));
   // A deeper well (or lower gain) is quieter: shot noise relative to the signal falls as 1 / sqrt(e).
   EXPECT_NEAR(sigma({1000, 0, 1}, 0.5f) / sigma({4000, 0, 1}, 0.5f), 2.0, 0.2);
   EXPECT_NEAR(sigma({4000, 0, 4}, 0.5f), sigma({1000, 0, 1}, 0.5f), 1e-9);
