@@ -64,12 +64,12 @@ render::GBuffer make_gbuffer() {
   return g;
 }
 
-/// Shaded colour by class with film grain (sigma of 4 levels), R, G, B interleaved.
+/// Shaded colour by class with noise (sigma of 4 levels), R, G, B interleaved.
 std::vector<uint8_t> make_rgb(const render::GBuffer& g) {
   const Ontology o = default_ontology();
   std::vector<uint8_t> rgb(g.size() * 3);
   for (size_t i = 0; i < g.size(); ++i) {
-    Rng grain(kSeed, i, Purpose::FilmGrain);
+    Rng grain(kSeed, i, Purpose::SensorNoise);
     const auto& c = o.color(g.role[i]);
     const float shade = g.depth[i] > 0 ? 0.6f + 0.4f * std::abs(g.normal[i].z()) : 1.0f;
     for (int a = 0; a < 3; ++a) {

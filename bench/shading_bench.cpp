@@ -1,5 +1,5 @@
 // Shading benchmarks: shade_rgb at 1920x1080 on a synthetic G-buffer (ground plane, trunk
-// columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and grain parts.
+// columns, a foliage band, sky), 1 and 2 threads, plus the cost of its AO and sensor-noise draws.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -83,10 +83,11 @@ void BM_ShadeRgb(benchmark::State& state) {
   const Scene& s = scene();
   LightingPreset preset = preset_day();
   preset.sun_elevation_deg = 70;
+  const CameraModel model = camera_model(CameraConfig{}, s.camera);
   std::vector<uint8_t> rgb;
   tbb::task_arena arena(int(state.range(0)));
   for (auto _ : state) {
-    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, 0.015f}, rgb); });
+    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, model}, rgb); });
     benchmark::DoNotOptimize(rgb.data());
   }
   state.counters["threads"] = double(state.range(0));
@@ -95,6 +96,36 @@ void BM_ShadeRgb(benchmark::State& state) {
       benchmark::Counter(double(s.gbuffer.size()) * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_ShadeRgb)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+/// The camera models BM_ShadeRgbCamera compares: 0 none, 1 the default, 2-4 the default plus
+/// chromatic aberration, depth of field or motion blur (0.014 m forward and 0.1 degree of yaw).
+CameraModel bench_model(int64_t which, const Camera& cam) {
+  CameraModel m = camera_model(CameraConfig{}, cam);
+  if (which == 0) return {};
+  if (which == 2) m.chromatic_aberration = 0.002;
+  if (which == 3) m.depth_of_field = DepthOfField{2.0, 3.0, 5.65};
+  if (which == 4)
+    m.motion = ExposureMotion{0.01, pose_from_angles(cam.position() - Vec3d(0.007, 0, 0), -0.05, -5, 0),
+                              pose_from_angles(cam.position() + Vec3d(0.007, 0, 0), 0.05, -5, 0)};
+  return m;
+}
+
+/// shade_rgb on 2 threads with camera model `state.range(0)` (bench_model); run with
+/// --benchmark_enable_random_interleaving to compare them.
+void BM_ShadeRgbCamera(benchmark::State& state) {
+  const Scene& s = scene();
+  LightingPreset preset = preset_day();
+  preset.sun_elevation_deg = 70;
+  const CameraModel model = bench_model(state.range(0), s.camera);
+  std::vector<uint8_t> rgb;
+  tbb::task_arena arena(2);
+  for (auto _ : state) {
+    arena.execute([&] { shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, model}, rgb); });
+    benchmark::DoNotOptimize(rgb.data());
+  }
+  state.counters["model"] = double(state.range(0));
+}
+BENCHMARK(BM_ShadeRgbCamera)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 void BM_ScreenSpaceAo(benchmark::State& state) {
   const Scene& s = scene();
@@ -109,15 +140,15 @@ void BM_ScreenSpaceAo(benchmark::State& state) {
 }
 BENCHMARK(BM_ScreenSpaceAo)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-void BM_FilmGrain(benchmark::State& state) {
-  const uint64_t key = grain_key("random", 0);
+void BM_SensorNormals(benchmark::State& state) {
+  const uint64_t key = noise_key("random", 0);
   for (auto _ : state) {
     Vec3f sum = Vec3f::Zero();
-    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) sum += film_grain(1, key, i, 0.015f);
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) sum += sensor_normals(1, key, i);
     benchmark::DoNotOptimize(sum);
   }
   state.counters["pixels"] = double(kWidth) * kHeight;
 }
-BENCHMARK(BM_FilmGrain)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SensorNormals)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

@@ -42,8 +42,20 @@ struct CameraConfig {
   double ground_height = 1.5;     ///< camera.ground_height (m above ground)
   double aerial_height = 15;      ///< camera.aerial_height (m above ground)
   double aerial_pitch_deg = -45;  ///< camera.aerial_pitch_deg
-  double film_grain = 0.015;      ///< camera.film_grain (std-dev, linear units)
   bool antialias = true;          ///< camera.antialias: edge filter on RGB (labels stay exact)
+  bool noise = true;              ///< camera.noise: shot + read sensor noise on RGB
+  double full_well_e = 10000;     ///< camera.full_well_e (electrons at full scale, gain 1)
+  double read_noise_e = 3;        ///< camera.read_noise_e (electrons, std-dev)
+  double gain = 2;                ///< camera.gain (analog gain, linear)
+  double vignetting = 0.25;       ///< camera.vignetting (strength of the cos^4 falloff)
+  double chromatic_aberration = 0;  ///< camera.chromatic_aberration (lateral, fraction of the radius)
+  bool depth_of_field = false;    ///< camera.depth_of_field: thin-lens blur
+  double f_number = 2;            ///< camera.f_number (aperture)
+  double focus_distance = 3;      ///< camera.focus_distance (m along the optical axis)
+  double sensor_width_mm = 11.3;  ///< camera.sensor_width_mm (gives the focal length in mm)
+  bool motion_blur = false;       ///< camera.motion_blur: autopilot frames blurred along the trail
+  double shutter_s = 0.01;        ///< camera.shutter_s (exposure time for motion blur)
+  double autopilot_speed = 1.4;   ///< camera.autopilot_speed (m/s along the trail)
 };
 
 /// Vegetation placement (`[vegetation]`).

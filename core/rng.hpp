@@ -22,7 +22,7 @@ enum class Purpose : uint32_t {
   ResolvePriority = 17,
   AssetShape = 20,
   RandomPose = 30,
-  FilmGrain = 40,
+  SensorNoise = 40,
   MaterialNoise = 41,
   WeatherOverlay = 42,
   Test = 1000,

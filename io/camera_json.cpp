@@ -3,16 +3,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "io/camera_model_json.hpp"
 #include "io/json_read.hpp"
 
 namespace silva::io {
 
 std::string camera_json(const CameraRecord& r) {
   const Camera& c = r.camera;
-  nlohmann::ordered_json m = nlohmann::ordered_json::array();
-  for (int row = 0; row < 4; ++row)
-    m.push_back({c.camera_to_world(row, 0), c.camera_to_world(row, 1), c.camera_to_world(row, 2),
-                 c.camera_to_world(row, 3)});
   nlohmann::ordered_json j;
   j["frame"] = r.frame;
   j["sequence"] = r.sequence;
@@ -20,13 +17,14 @@ std::string camera_json(const CameraRecord& r) {
   j["width"] = c.width;
   j["height"] = c.height;
   j["K"] = {{c.fx, 0.0, c.cx}, {0.0, c.fy, c.cy}, {0.0, 0.0, 1.0}};
-  j["camera_to_world"] = std::move(m);
+  j["camera_to_world"] = matrix4_json(c.camera_to_world);
   j["near"] = c.near;
   j["far"] = c.far;
   j["yaw_deg"] = r.yaw_deg;
   j["pitch_deg"] = r.pitch_deg;
   j["roll_deg"] = r.roll_deg;
   j["trail_s"] = r.trail_s ? nlohmann::ordered_json(*r.trail_s) : nlohmann::ordered_json(nullptr);
+  j["camera_model"] = camera_model_json(r.model);
   return j.dump(2) + "\n";
 }
 
@@ -47,15 +45,14 @@ CameraRecord parse_camera_json(const std::string& text, const std::string& sourc
   c.fy = k[1][1];
   c.cx = k[0][2];
   c.cy = k[1][2];
-  const auto m = json_matrix(j, "camera_to_world", 4, 4, source);
-  for (int row = 0; row < 4; ++row)
-    for (int col = 0; col < 4; ++col) c.camera_to_world(row, col) = m[row][col];
+  c.camera_to_world = read_matrix4(j, "camera_to_world", source);
   c.near = json_number(j, "near", source);
   c.far = json_number(j, "far", source);
   r.yaw_deg = json_number(j, "yaw_deg", source);
   r.pitch_deg = json_number(j, "pitch_deg", source);
   r.roll_deg = json_number(j, "roll_deg", source);
   if (!json_member(j, "trail_s", source).is_null()) r.trail_s = json_number(j, "trail_s", source);
+  r.model = parse_camera_model(j, source);
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/camera.hpp"
+#include "core/camera_model.hpp"
 
 namespace silva::io {
 
@@ -19,6 +20,7 @@ struct CameraRecord {
   Camera camera;                        ///< Resolution, K, camera_to_world, near, far.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).
   std::optional<double> trail_s;        ///< Arc length along the trail (autopilot) or none (null).
+  CameraModel model;                    ///< Sensor noise and optics applied to the frame's RGB.
 };
 
 /// The camera file's text (keys in CONTRACT.md order, doubles printed to round-trip exactly).

@@ -90,7 +90,12 @@ uint8_t linear_to_srgb8(float x) {
 
 const uint8_t* srgb8_table() { return srgb_table().data(); }
 
-uint64_t grain_key(std::string_view sequence, uint64_t frame) {
+float noisy_signal(float x, float normal, const NoiseScale& noise) {
+  const float electrons = std::min(std::max(x, 0.0f), 1.0f) * noise.electrons_per_unit;
+  return x + normal * (std::sqrt(electrons + noise.read_variance) * noise.unit_per_electron);
+}
+
+uint64_t noise_key(std::string_view sequence, uint64_t frame) {
   uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a over the name's bytes
   for (char ch : sequence) {
     h ^= uint8_t(ch);
@@ -99,12 +104,12 @@ uint64_t grain_key(std::string_view sequence, uint64_t frame) {
   return hash_combine(h, frame);
 }
 
-float grain_quantile(uint16_t index) { return quantile_table()[index]; }
+float normal_quantile(uint16_t index) { return quantile_table()[index]; }
 
-Vec3f film_grain(uint64_t seed, uint64_t key, uint64_t pixel, float sigma) {
-  const uint64_t bits = rng_bits(seed, key, uint64_t(Purpose::FilmGrain), pixel);
+Vec3f sensor_normals(uint64_t seed, uint64_t key, uint64_t pixel) {
+  const uint64_t bits = rng_bits(seed, key, uint64_t(Purpose::SensorNoise), pixel);
   const auto& q = quantile_table();
-  return Vec3f(q[uint16_t(bits)], q[uint16_t(bits >> 16)], q[uint16_t(bits >> 32)]) * sigma;
+  return Vec3f(q[uint16_t(bits)], q[uint16_t(bits >> 16)], q[uint16_t(bits >> 32)]);
 }
 
 }  // namespace silva::render

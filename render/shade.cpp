@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,9 @@
 
 #include "core/base_color.hpp"
 #include "core/error.hpp"
+#include "render/camera_encode.hpp"
+#include "render/camera_optics.hpp"
+#include "render/linear_frame.hpp"
 #include "render/materials.hpp"
 #include "render/post.hpp"
 #include "render/shade_ao.hpp"
@@ -169,29 +173,42 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
   const WeatherLook look(lit.weather, sky);
   const float exposure = exposure_multiplier(lit.ev100);
-  const uint64_t key = grain_key(in.sequence, in.frame);
+  const uint64_t key = noise_key(in.sequence, in.frame);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
+  const bool whole_frame = needs_whole_frame(in.model);
+  LinearFrame frame, scratch;
+  if (whole_frame) frame.resize(g.width, g.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     RowTerms terms(g.width);
-    std::vector<Vec3f> radiance(size_t(g.width)), grain(in.film_grain > 0.0f ? size_t(g.width) : 0);
+    std::optional<RowEncoder> encoder;  // encodes each row as it is shaded, unless the optics need the frame
+    if (!whole_frame) encoder.emplace(in.camera, in.model, exposure, in.seed, key);
+    std::vector<Vec3f> row_radiance(whole_frame ? 0 : size_t(g.width));
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
+      Vec3f* radiance = whole_frame ? &frame.rgb[row] : row_radiance.data();
       terms.evaluate(in, sky, fog, half_ao, v);
       for (int u = 0; u < g.width; ++u) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        radiance[size_t(u)] = g.depth[i] == 0.0f ? sky.radiance(dir)
-                                                 : surface_radiance(in, sky, fog, look, terms, u, v, dir);
-        if (!grain.empty()) grain[size_t(u)] = film_grain(in.seed, key, i, in.film_grain);
+        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, look, terms, u, v, dir);
       }
-      if (overlay.active()) overlay.apply_row(v, radiance.data(), g.width);
-      encode_srgb8_row(radiance.data()->data(), grain.empty() ? nullptr : grain.data()->data(), size_t(g.width), exposure,
-                       &rgb_out[row * 3]);
+      if (overlay.active()) overlay.apply_row(v, radiance, g.width);
+      if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     }
     bare_soil += terms.bare_soil;
   });
+  if (whole_frame) {
+    apply_optics(frame, scratch, g.depth, in.camera, in.model);
+    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+      RowEncoder encoder(in.camera, in.model, exposure, in.seed, key);
+      for (int v = rows.begin(); v < rows.end(); ++v) {
+        const size_t row = size_t(v) * size_t(g.width);
+        encoder.encode(v, frame.rgb[row].data(), &rgb_out[row * 3]);
+      }
+    });
+  }
   return {bare_soil.load()};
 }
 

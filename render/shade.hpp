@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "core/camera_model.hpp"
 #include "render/gbuffer.hpp"
 #include "render/lighting.hpp"
 
@@ -16,10 +17,10 @@ struct ShadeInputs {
   const Camera& camera;           ///< The view's camera (same size as the G-buffer).
   const LightingPreset& preset;   ///< Sun, sky, fog, clouds, exposure.
   const ShadowMap* shadow;        ///< Sun shadow map, or nullptr.
-  uint64_t seed;                  ///< World seed (film grain stream).
-  std::string_view sequence;      ///< Sequence name (film grain key).
-  uint64_t frame;                 ///< Frame number within the sequence (film grain key).
-  float film_grain;               ///< Grain std-dev in display-linear [0, 1] units (camera.film_grain).
+  uint64_t seed;                  ///< World seed (sensor noise stream).
+  std::string_view sequence;      ///< Sequence name (sensor noise key).
+  uint64_t frame;                 ///< Frame number within the sequence (sensor noise key).
+  CameraModel model;              ///< Sensor noise and optics applied to the RGB.
 };
 
 /// What shading saw, for the run's statistics.
@@ -31,9 +32,11 @@ struct ShadeCounts {
 /// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
 /// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
 /// across pixels of similar depth), through exponential height fog; sky pixels get the Preetham /
-/// overcast sky; then falling rain or snow over the RGB, the EV100 exposure, ACES tone mapping,
-/// film grain, sRGB. Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the
-/// caller's TBB arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
+/// overcast sky; falling rain or snow over the radiance. Then the camera model: motion blur, depth
+/// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
+/// exposure with vignetting, shot + read sensor noise, ACES tone mapping, sRGB.
+/// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
+/// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
 /// Returns the counts of what it shaded.
 ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out);
 

@@ -23,8 +23,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The camera model of a planned frame: `[camera]`'s, with the frame's motion while the shutter is open.
+CameraModel frame_camera_model(const Config& config, const world::PlannedFrame& f) {
+  CameraModel model = camera_model(config.camera, f.camera);
+  model.motion = f.exposure_motion;
+  return model;
+}
+
 /// The camera record of a planned frame.
-io::CameraRecord camera_record(const world::PlannedFrame& f) {
+io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& f) {
   io::CameraRecord r;
   r.frame = f.frame;
   r.sequence = f.sequence;
@@ -34,6 +41,7 @@ io::CameraRecord camera_record(const world::PlannedFrame& f) {
   r.pitch_deg = f.pitch_deg;
   r.roll_deg = f.roll_deg;
   r.trail_s = f.trail_s;
+  r.model = frame_camera_model(config, f);
   return r;
 }
 
@@ -43,7 +51,7 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   if (settings.outputs.has(io::OutputType::Rgb)) {
     const Stopwatch clock;
     const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
-                                 f.sequence, uint64_t(f.frame), float(ctx.config.camera.film_grain)};
+                                 f.sequence, uint64_t(f.frame), frame_camera_model(ctx.config, f)};
     work.bare_soil_pixels = render::shade_rgb(in, work.rgb).bare_soil_pixels;
     if (ctx.config.camera.antialias) {
       render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
@@ -62,7 +70,7 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
 }
 
 /// Writes `work`'s files and camera JSON and adds the frame to the writer's stats.
-void write_frame(const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
+void write_frame(const Config& config, const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
   const Stopwatch clock;
   CaptureStats& stats = writer.stats;
   const fs::path seq = settings.run_dir / work.frame.sequence;
@@ -70,7 +78,7 @@ void write_frame(const CaptureSettings& settings, const FrameWork& work, Dataset
     io::write_file_atomic(seq / file.relative_path, file.bytes);
     stats.bytes_written += file.bytes.size();
   }
-  const std::string camera = io::camera_json(camera_record(work.frame));
+  const std::string camera = io::camera_json(camera_record(config, work.frame));
   io::write_file_atomic(settings.run_dir / camera_file(work.frame), camera);
   stats.bytes_written += camera.size();
   stats.write_s += clock.seconds();
@@ -125,7 +133,7 @@ void install_write_dataset(ecs::World& world) {
         const CaptureSettings& settings = sys.resource<const CaptureSettings>();
         DatasetWriter& writer = *sys.resource<std::unique_ptr<DatasetWriter>>();
         writer.stage.submit([&ctx, &settings, work] { shade_and_encode(ctx, settings, *work); },
-                            [&settings, &writer, work] { write_frame(settings, *work, writer); });
+                            [&ctx, &settings, &writer, work] { write_frame(ctx.config, settings, *work, writer); });
       });
 }
 

@@ -143,6 +143,19 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
   }
 }
 
+void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames) {
+  const Config& c = ctx.config;
+  const int yaws = int(c.captures.autopilot_yaws.size());
+  const double half = 0.5 * c.camera.autopilot_speed * c.camera.shutter_s, length = ctx.trail.nav.length();
+  for (PlannedFrame& f : frames) {
+    const int i = f.frame / yaws;
+    const size_t k = size_t(f.frame % yaws);
+    const double open = std::clamp(*f.trail_s - half, 0.0, length), close = std::clamp(*f.trail_s + half, 0.0, length);
+    f.exposure_motion = ExposureMotion{c.camera.shutter_s, autopilot_frame(ctx, i, k, open).camera.camera_to_world,
+                                       autopilot_frame(ctx, i, k, close).camera.camera_to_world};
+  }
+}
+
 std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {
   const Config& c = ctx.config;
   const auto [height, pitch] = height_and_pitch(c);
@@ -206,6 +219,7 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
       }
       frames = plan_autopilot(ctx);
       settle_autopilot(ctx, cache, frames);
+      if (ctx.config.camera.motion_blur) add_autopilot_motion(ctx, frames);
     } else if (sequence == "random") {
       frames = plan_random(ctx, cache);
     } else if (sequence == "custom") {

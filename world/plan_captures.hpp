@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "core/camera_model.hpp"
 #include "core/pose_entry.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/world_context.hpp"
@@ -30,6 +31,7 @@ struct PlannedFrame {
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).
   std::optional<double> trail_s;  ///< Arc length along the trail (autopilot only).
   PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
+  std::optional<ExposureMotion> exposure_motion;  ///< Camera motion while the shutter is open (motion blur), or still.
 };
 
 /// Steepest slope a random pose may stand on (CONTRACT.md), degrees.
@@ -54,6 +56,10 @@ std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx);
 /// length within kTrailSearchReach (tried in steps of kPoseSearchStep, ahead first), keeping
 /// its yaws relative to the trail; marks the frames Moved or Unresolvable (left in place).
 void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames);
+
+/// Gives each autopilot frame its motion while the shutter is open: the poses along the trail at
+/// trail_s -/+ camera.autopilot_speed * camera.shutter_s / 2 (kept within the trail), yaws relative to it.
+void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames);
 
 /// Random: captures.random_count poses in the capture region on walkable ground, yaw uniform;
 /// frame f draws from the RNG keyed on (seed, f) until a walkable spot, then takes the first

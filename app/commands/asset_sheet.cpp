@@ -86,7 +86,7 @@ void render_cell(const assets::Asset& asset, const Mesh& ground, int size, std::
   const AABB region{Vec3f(-kGroundHalf, -kGroundHalf, -1.0f), Vec3f(kGroundHalf, kGroundHalf, 40.0f)};
   const render::ShadowMap shadow =
       renderer.render_shadow_map(scene, render::sun_direction(preset).cast<double>(), region, 2048, options);
-  render::shade_rgb({gbuffer, camera, preset, &shadow, 1, "sheet", 0, 0.0f}, rgb);
+  render::shade_rgb({gbuffer, camera, preset, &shadow, 1, "sheet", 0, {}}, rgb);
   semantic = io::semantic_color_image(systems::label_planes(gbuffer), default_ontology());
 }
 

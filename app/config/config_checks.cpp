@@ -58,6 +58,15 @@ void check_config(const LoadedConfig& loaded) {
     throw InputError(where + ": camera.near = " + format_number(c.camera.near) +
                      " must be less than camera.far = " + format_number(c.camera.far));
   }
+  if (c.camera.depth_of_field) {
+    constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+    const double focal_m = c.camera.sensor_width_mm * 1e-3 / (2.0 * std::tan(0.5 * c.camera.fov_deg * kDegToRad));
+    if (!(c.camera.focus_distance > focal_m)) {
+      throw InputError(where + ": camera.focus_distance = " + format_number(c.camera.focus_distance) +
+                       " must exceed the lens's focal length, " + format_number(focal_m) +
+                       " m (from camera.sensor_width_mm and camera.fov_deg)");
+    }
+  }
   check_multiple(where, c.terrain.chunk_size, "terrain.vertex_spacing", c.terrain.vertex_spacing);
   check_multiple(where, c.terrain.chunk_size, "vegetation.grid_spacing", c.vegetation.grid_spacing);
   const auto& sequences = c.captures.sequences;

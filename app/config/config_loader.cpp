@@ -37,8 +37,10 @@ std::string one_line(std::string_view text) {
   return out;
 }
 
-/// The "did you mean" error for a name that is not a key.
+/// The error for a name that is not a key: what replaced it, else the closest key ("did you mean").
 [[noreturn]] void unknown_key(const std::string& where, std::string_view name) {
+  if (const std::string_view note = replaced_key(name); !note.empty())
+    throw InputError(where + ": key '" + std::string(name) + "' no longer exists; " + std::string(note));
   throw InputError(where + ": unknown key '" + std::string(name) + "' (did you mean '" +
                    std::string(closest_key(name)) + "'?)");
 }

@@ -70,10 +70,36 @@ std::vector<ConfigKey> build_schema() {
        above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_height; }},
       {"camera.aerial_pitch_deg", T::Float, "aerial camera pitch, degrees (ground pitch is 0)",
        between(-90, 90), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_pitch_deg; }},
-      {"camera.film_grain", T::Float, "grain std-dev in linear [0,1] units, 0 = off",
-       between(0, 1), {}, [](Config& c) -> FieldRef { return &c.camera.film_grain; }},
       {"camera.antialias", T::Bool, "edge antialiasing of RGB; labels and depth stay exact per pixel", {}, {},
        [](Config& c) -> FieldRef { return &c.camera.antialias; }},
+      {"camera.noise", T::Bool, "shot + read sensor noise on the linear RGB signal", {}, {},
+       [](Config& c) -> FieldRef { return &c.camera.noise; }},
+      {"camera.full_well_e", T::Float, "sensor full-well capacity at gain 1, electrons", between(100, 1e6), {},
+       [](Config& c) -> FieldRef { return &c.camera.full_well_e; }},
+      {"camera.read_noise_e", T::Float, "sensor read noise std-dev, electrons", between(0, 1000), {},
+       [](Config& c) -> FieldRef { return &c.camera.read_noise_e; }},
+      {"camera.gain", T::Float, "analog gain (linear): full scale is full_well_e / gain electrons", between(1, 64),
+       {}, [](Config& c) -> FieldRef { return &c.camera.gain; }},
+      {"camera.vignetting", T::Float, "strength of the cos^4 vignetting falloff, 0 = none, 1 = the full law",
+       between(0, 1), {}, [](Config& c) -> FieldRef { return &c.camera.vignetting; }},
+      {"camera.chromatic_aberration", T::Float,
+       "lateral chromatic aberration: red sampled at radius x (1 - k), blue at (1 + k); 0 = none", between(0, 0.05),
+       {}, [](Config& c) -> FieldRef { return &c.camera.chromatic_aberration; }},
+      {"camera.depth_of_field", T::Bool, "thin-lens depth of field (camera.f_number, focus_distance)", {}, {},
+       [](Config& c) -> FieldRef { return &c.camera.depth_of_field; }},
+      {"camera.f_number", T::Float, "aperture f-number of the depth of field", between(0.5, 64), {},
+       [](Config& c) -> FieldRef { return &c.camera.f_number; }},
+      {"camera.focus_distance", T::Float, "distance in focus, metres along the optical axis", between(0.1, 10000),
+       {}, [](Config& c) -> FieldRef { return &c.camera.focus_distance; }},
+      {"camera.sensor_width_mm", T::Float,
+       "sensor width, millimetres; with camera.fov_deg it gives the focal length of the depth of field",
+       between(1, 100), {}, [](Config& c) -> FieldRef { return &c.camera.sensor_width_mm; }},
+      {"camera.motion_blur", T::Bool, "autopilot frames blurred by the camera's motion along the trail", {}, {},
+       [](Config& c) -> FieldRef { return &c.camera.motion_blur; }},
+      {"camera.shutter_s", T::Float, "exposure time of the motion blur, seconds", above(0, 1), {},
+       [](Config& c) -> FieldRef { return &c.camera.shutter_s; }},
+      {"camera.autopilot_speed", T::Float, "the autopilot camera's speed along the trail, metres per second",
+       above(0, 100), {}, [](Config& c) -> FieldRef { return &c.camera.autopilot_speed; }},
       {"vegetation.density", T::Float, "percent of placement points that hold a tree",
        between(1, 25), {}, [](Config& c) -> FieldRef { return &c.vegetation.density; }},
       {"vegetation.grid_spacing", T::Float, "metres between placement points", between(0.1, 1000),
@@ -195,6 +221,12 @@ const ConfigKey* find_key(std::string_view name) {
     if (key.name == name) return &key;
   }
   return nullptr;
+}
+
+std::string_view replaced_key(std::string_view name) {
+  if (name == "camera.film_grain")
+    return "the sensor noise model replaced it: camera.noise, camera.full_well_e, camera.read_noise_e, camera.gain";
+  return {};
 }
 
 std::string_view closest_key(std::string_view name) {

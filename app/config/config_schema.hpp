@@ -61,6 +61,9 @@ const std::vector<ConfigKey>& config_schema();
 /// The key with this dotted name, or nullptr.
 const ConfigKey* find_key(std::string_view name);
 
+/// For a key that no longer exists, what replaced it (one line); empty for any other name.
+std::string_view replaced_key(std::string_view name);
+
 /// The valid key closest to `name` by edit distance (ties: first in schema order).
 std::string_view closest_key(std::string_view name);
 

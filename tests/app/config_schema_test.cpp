@@ -15,7 +15,10 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "captures.sequences", "captures.random_count", "captures.autopilot_points",
         "captures.autopilot_yaws", "captures.aerial", "captures.poses_file", "camera.fov_deg",
         "camera.near", "camera.far", "camera.ground_height", "camera.aerial_height",
-        "camera.aerial_pitch_deg", "camera.film_grain", "camera.antialias", "vegetation.density",
+        "camera.aerial_pitch_deg", "camera.antialias", "camera.noise", "camera.full_well_e",
+        "camera.read_noise_e", "camera.gain", "camera.vignetting", "camera.chromatic_aberration",
+        "camera.depth_of_field", "camera.f_number", "camera.focus_distance", "camera.sensor_width_mm",
+        "camera.motion_blur", "camera.shutter_s", "camera.autopilot_speed", "vegetation.density",
         "vegetation.grid_spacing", "vegetation.ground", "vegetation.season", "terrain.max_elevation", "terrain.octaves",
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
@@ -23,7 +26,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 41u);
+  EXPECT_EQ(names.size(), 53u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 
@@ -79,7 +82,8 @@ TEST(ConfigSchema, RangesDescribeThemselves) {
   EXPECT_FALSE(find_key("camera.near")->range.contains(0));
   EXPECT_TRUE(find_key("vegetation.density")->range.contains(25));
   EXPECT_FALSE(find_key("vegetation.density")->range.contains(25.5));
-  EXPECT_FALSE(find_key("camera.film_grain")->range.contains(std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_FALSE(find_key("camera.vignetting")->range.contains(std::numeric_limits<double>::quiet_NaN()));
+  EXPECT_EQ(find_key("camera.film_grain"), nullptr);  // replaced by the sensor noise model
 }
 
 TEST(ConfigSchema, SplitsNames) {

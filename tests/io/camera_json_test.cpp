@@ -20,6 +20,14 @@ CameraRecord sample(bool with_trail) {
   r.roll_deg = 0.1;
   r.camera.camera_to_world = pose_from_angles(Vec3d(10.1, -3.7, 1.5), r.yaw_deg, r.pitch_deg, r.roll_deg);
   if (with_trail) r.trail_s = 123.456789012345;
+  r.model.noise = SensorNoise{10000, 3, 2.5};
+  r.model.vignetting = 0.25;
+  if (with_trail) {  // every optic on, with values that need all 17 digits
+    r.model.chromatic_aberration = 0.0031;
+    r.model.depth_of_field = DepthOfField{2.8, 3.3, 5.65 / 3.0};
+    r.model.motion = ExposureMotion{1.0 / 60.0, pose_from_angles(Vec3d(10.09, -3.7, 1.5), 33.2, -12.25, 0.1),
+                                    pose_from_angles(Vec3d(10.11, -3.7, 1.5), 33.4, -12.25, 0.1)};
+  }
   return r;
 }
 
@@ -40,6 +48,7 @@ void expect_same(const CameraRecord& a, const CameraRecord& b) {
   EXPECT_EQ(a.pitch_deg, b.pitch_deg);
   EXPECT_EQ(a.roll_deg, b.roll_deg);
   EXPECT_EQ(a.trail_s, b.trail_s);
+  EXPECT_EQ(a.model, b.model);  // bit-exact doubles
 }
 
 TEST(CameraJson, RoundTripsExactly) {
@@ -57,7 +66,7 @@ TEST(CameraJson, HasContractKeysInOrder) {
   for (const auto& [k, v] : j.items()) keys.push_back(k);
   EXPECT_EQ(keys, (std::vector<std::string>{"frame", "sequence", "perspective", "width", "height", "K",
                                             "camera_to_world", "near", "far", "yaw_deg", "pitch_deg", "roll_deg",
-                                            "trail_s"}));
+                                            "trail_s", "camera_model"}));
   EXPECT_TRUE(j["trail_s"].is_null());
   EXPECT_EQ(j["perspective"], "aerial");
   EXPECT_DOUBLE_EQ(j["K"][0][0].get<double>(), 960.0);
@@ -65,6 +74,38 @@ TEST(CameraJson, HasContractKeysInOrder) {
   EXPECT_EQ(j["K"][2][2], 1.0);
   EXPECT_EQ(j["camera_to_world"][3][3], 1.0);
   EXPECT_EQ(j["camera_to_world"][0][3], 10.1);  // row-major: translation in the last column
+  const auto& model = j["camera_model"];
+  std::vector<std::string> model_keys;
+  for (const auto& [k, v] : model.items()) model_keys.push_back(k);
+  EXPECT_EQ(model_keys,
+            (std::vector<std::string>{"noise", "vignetting", "chromatic_aberration", "depth_of_field", "motion_blur"}));
+  EXPECT_EQ(model["noise"]["full_well_e"], 10000.0);
+  EXPECT_EQ(model["noise"]["read_noise_e"], 3.0);
+  EXPECT_EQ(model["noise"]["gain"], 2.5);
+  EXPECT_EQ(model["vignetting"], 0.25);
+  EXPECT_TRUE(model["depth_of_field"].is_null());  // off
+  EXPECT_TRUE(model["motion_blur"].is_null());
+  const auto on = nlohmann::ordered_json::parse(camera_json(sample(true)))["camera_model"];
+  EXPECT_EQ(on["depth_of_field"]["f_number"], 2.8);
+  EXPECT_EQ(on["motion_blur"]["shutter_s"], 1.0 / 60.0);
+  EXPECT_EQ(on["motion_blur"]["close_camera_to_world"][0][3], 10.11);
+}
+
+TEST(CameraJson, MalformedCameraModelIsInputErrorNamingTheKey) {
+  auto j = nlohmann::json::parse(camera_json(sample(true)));
+  j["camera_model"]["depth_of_field"].erase("f_number");
+  try {
+    parse_camera_json(j.dump(), "cams/000002.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("f_number"), std::string::npos) << e.what();
+  }
+  j = nlohmann::json::parse(camera_json(sample(true)));
+  j["camera_model"]["noise"] = 3;
+  EXPECT_THROW(parse_camera_json(j.dump(), "x.json"), InputError);
+  j = nlohmann::json::parse(camera_json(sample(true)));
+  j.erase("camera_model");
+  EXPECT_THROW(parse_camera_json(j.dump(), "x.json"), InputError);
 }
 
 TEST(CameraJson, MalformedFileIsInputErrorNamingFileAndKey) {

@@ -121,7 +121,7 @@ TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {
   card.parts[0].base_color = colour;
   const GBuffer g = render_card_over_ground(cam, std::move(card));
   std::vector<uint8_t> rgb;
-  shade_rgb({g, cam, preset_day(), nullptr, 1, "random", 0, 0.0f}, rgb);
+  shade_rgb({g, cam, preset_day(), nullptr, 1, "random", 0, {}}, rgb);
   int red = 0, blue = 0, procedural = 0;
   for (int v = 0; v < cam.height; ++v)
     for (int u = 0; u < cam.width; ++u) {

@@ -52,18 +52,34 @@ TEST(ShadingPost, ExposureIsPowerOfTwo) {
 namespace silva::render {
 namespace {
 
+TEST(ShadingPost, NoisySignalKnownAnswers) {
+  const NoiseScale sensor{10000.0f, 1e-4f, 9.0f};  // full well 10 000 e-, read noise 3 e-
+  // 0.25 of full scale: 2 500 e-, sigma sqrt(2 509) e- = 0.0050090 of full scale.
+  EXPECT_NEAR(noisy_signal(0.25f, 1.0f, sensor), 0.25 + 0.0050090, 1e-6);
+  EXPECT_NEAR(noisy_signal(0.25f, -2.0f, sensor), 0.25 - 2 * 0.0050090, 1e-6);
+  EXPECT_NEAR(noisy_signal(0.0f, 1.0f, sensor), 3e-4, 1e-8);      // read noise only
+  EXPECT_NEAR(noisy_signal(-0.5f, 1.0f, sensor), -0.5 + 3e-4, 1e-7);
+  EXPECT_NEAR(noisy_signal(4.0f, 1.0f, sensor), 4.0 + 0.0100045, 1e-6);  // a full well above full scale
+  EXPECT_EQ(noisy_signal(0.3f, 0.0f, sensor), 0.3f);
+}
+
 TEST(ShadingPost, RowEncoderGivesTheScalarBytesOnEveryHighwayTarget) {
-  std::vector<float> radiance, grain;
+  std::vector<float> radiance, normals, scales;
   for (int i = 0; i < 3 * 53; ++i) {  // 53 pixels: full vectors plus a tail on every target
     radiance.push_back(i % 7 == 0 ? -0.5f : float(i * i % 997) * 0.004f);
-    grain.push_back(float(i % 11 - 5) * 0.01f);
+    normals.push_back(float(i % 11 - 5) * 0.6f);
+    scales.push_back(1.7f * (1.0f - float(i % 13) * 0.03f));
   }
   const float exposure = 1.7f;
-  std::vector<uint8_t> plain, grained;
+  const NoiseScale sensor{1250.0f, 1.0f / 1250.0f, 25.0f};
+  std::vector<uint8_t> plain, noisy, vignetted;
   for (size_t k = 0; k < radiance.size(); ++k) {
     plain.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure)));
-    grained.push_back(linear_to_srgb8(tonemap_aces(radiance[k] * exposure) + grain[k]));
+    noisy.push_back(linear_to_srgb8(tonemap_aces(noisy_signal(radiance[k] * exposure, normals[k], sensor))));
+    vignetted.push_back(linear_to_srgb8(tonemap_aces(noisy_signal(radiance[k] * scales[k], normals[k], sensor))));
   }
+  EXPECT_NE(plain, noisy);
+  EXPECT_NE(noisy, vignetted);
   const std::vector<int64_t> targets = test::highway_targets();
   ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
@@ -71,10 +87,12 @@ TEST(ShadingPost, RowEncoderGivesTheScalarBytesOnEveryHighwayTarget) {
     ASSERT_EQ(encode_simd_target(), target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<uint8_t> out(radiance.size());
-    encode_srgb8_row(radiance.data(), nullptr, 53, exposure, out.data());
+    encode_srgb8_row(radiance.data(), 53, {exposure, nullptr, nullptr, sensor}, out.data());
     EXPECT_EQ(out, plain);
-    encode_srgb8_row(radiance.data(), grain.data(), 53, exposure, out.data());
-    EXPECT_EQ(out, grained);
+    encode_srgb8_row(radiance.data(), 53, {exposure, nullptr, normals.data(), sensor}, out.data());
+    EXPECT_EQ(out, noisy);
+    encode_srgb8_row(radiance.data(), 53, {exposure, scales.data(), normals.data(), sensor}, out.data());
+    EXPECT_EQ(out, vignetted);
   }
 }
 

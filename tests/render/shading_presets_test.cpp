@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "core/camera_model.hpp"
 #include "render/lighting.hpp"
 #include "render/shade.hpp"
 #include "render/weather_overlay.hpp"
@@ -19,7 +20,7 @@ std::vector<uint8_t> shade_view(const LightingPreset& preset, double pitch_deg =
   const Camera cam = test::test_camera(96, 64, pitch_deg);
   const GBuffer g = test::plane_gbuffer(cam, Material::Ground);
   std::vector<uint8_t> rgb;
-  shade_rgb({g, cam, preset, nullptr, 1, "random", 0, 0.015f}, rgb);
+  shade_rgb({g, cam, preset, nullptr, 1, "random", 0, camera_model(CameraConfig{}, cam)}, rgb);
   return rgb;
 }
 

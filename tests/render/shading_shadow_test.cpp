@@ -85,8 +85,8 @@ TEST(ShadingShadow, ShadowedPixelIsDarkerThanTheSameMaterialLit) {
   const ShadowMap open = test::plane_shadow_map(Vec3d(0, 0, 1), 200, 0.1);
   const ShadowMap blocked = test::plane_shadow_map(Vec3d(0, 0, 1), 200, 0.1, 50.0, 5.0);
   std::vector<uint8_t> lit, dark;
-  shade_rgb({g, cam, preset, &open, 3, "random", 0, 0.0f}, lit);
-  shade_rgb({g, cam, preset, &blocked, 3, "random", 0, 0.0f}, dark);
+  shade_rgb({g, cam, preset, &open, 3, "random", 0, {}}, lit);
+  shade_rgb({g, cam, preset, &blocked, 3, "random", 0, {}}, dark);
   const size_t centre = (size_t(12) * 32 + 16) * 3;
   ASSERT_GT(g.depth[centre / 3], 0.0f);
   for (int c = 0; c < 3; ++c) EXPECT_LT(int(dark[centre + c]) + 20, int(lit[centre + c])) << "channel " << c;

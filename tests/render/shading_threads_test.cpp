@@ -10,7 +10,20 @@
 namespace silva::render {
 namespace {
 
-std::vector<uint8_t> shade_with_threads(int threads, const LightingPreset& preset) {
+/// The default camera model, or every optic on too (motion: 0.3 m sideways and 2 degrees of yaw).
+CameraModel model_with(bool optics, const Camera& cam) {
+  CameraModel m = camera_model(CameraConfig{}, cam);
+  if (!optics) return m;
+  m.chromatic_aberration = 0.01;
+  m.depth_of_field = DepthOfField{1.0, 4.0, 20.0};
+  const Mat4d& pose = cam.camera_to_world;
+  m.motion = ExposureMotion{0.01, pose_from_angles(cam.position() - Vec3d(0, 0.15, 0), -1, -8, 0),
+                            pose_from_angles(cam.position() + Vec3d(0, 0.15, 0), 1, -8, 0)};
+  EXPECT_NE(m.motion->open_to_world, pose);
+  return m;
+}
+
+std::vector<uint8_t> shade_with_threads(int threads, const LightingPreset& preset, bool optics) {
   const Camera cam = test::test_camera(160, 96, 8);
   GBuffer g = test::plane_gbuffer(cam, Material::Ground, 12.0);
   for (size_t i = 0; i < g.size(); ++i)  // a mix of materials across the image
@@ -18,17 +31,18 @@ std::vector<uint8_t> shade_with_threads(int threads, const LightingPreset& prese
   const ShadowMap map = test::plane_shadow_map(sun_direction(preset).cast<double>(), 256, 0.2, 2.0, 3.0);
   std::vector<uint8_t> rgb;
   tbb::task_arena arena(threads);
-  arena.execute([&] { shade_rgb({g, cam, preset, &map, 11, "random", 2, 0.015f}, rgb); });
+  arena.execute([&] { shade_rgb({g, cam, preset, &map, 11, "random", 2, model_with(optics, cam)}, rgb); });
   return rgb;
 }
 
 TEST(ShadingThreads, OneAndTwoThreadsGiveIdenticalBytes) {
-  for (const auto& [name, preset] : builtin_presets()) {
-    const std::vector<uint8_t> one = shade_with_threads(1, preset);
-    const std::vector<uint8_t> two = shade_with_threads(2, preset);
-    ASSERT_EQ(one.size(), size_t(160 * 96 * 3));
-    EXPECT_EQ(one, two) << name;
-  }
+  for (const auto& [name, preset] : builtin_presets())
+    for (bool optics : {false, true}) {
+      const std::vector<uint8_t> one = shade_with_threads(1, preset, optics);
+      const std::vector<uint8_t> two = shade_with_threads(2, preset, optics);
+      ASSERT_EQ(one.size(), size_t(160 * 96 * 3));
+      EXPECT_EQ(one, two) << name << (optics ? " with every optic" : "");
+    }
 }
 
 TEST(ShadingThreads, MismatchedCameraIsAnInputError) {
@@ -36,7 +50,7 @@ TEST(ShadingThreads, MismatchedCameraIsAnInputError) {
   const GBuffer g = test::plane_gbuffer(test::test_camera(8, 8, 0), Material::Ground);
   const LightingPreset day = preset_day();
   std::vector<uint8_t> rgb;
-  EXPECT_THROW(shade_rgb({g, cam, day, nullptr, 0, "random", 0, 0.0f}, rgb), InputError);
+  EXPECT_THROW(shade_rgb({g, cam, day, nullptr, 0, "random", 0, {}}, rgb), InputError);
 }
 
 }  // namespace

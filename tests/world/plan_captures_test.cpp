@@ -197,3 +197,37 @@ TEST(PlanCaptures, CustomPosesKeepFileOrderAndDropToTheGroundWithoutZ) {
 
 }  // namespace
 }  // namespace silva::world
+
+namespace silva::world {
+namespace {
+
+TEST(PlanCaptures, AutopilotMotionSpansSpeedTimesShutterAlongTheTrail) {
+  Config cfg = test::small_world_config(77);
+  cfg.captures.autopilot_points = 5;
+  cfg.camera.autopilot_speed = 2.0;
+  cfg.camera.shutter_s = 0.05;  // 0.1 m of trail while the shutter is open
+  const WorldContext ctx = make_world_context(cfg, test::small_library());
+  std::vector<PlannedFrame> frames = plan_autopilot(ctx);
+  for (const PlannedFrame& f : frames) EXPECT_FALSE(f.exposure_motion.has_value());
+  add_autopilot_motion(ctx, frames);
+  const double length = ctx.trail.nav.length();
+  for (const PlannedFrame& f : frames) {
+    ASSERT_TRUE(f.exposure_motion.has_value());
+    const ExposureMotion& m = *f.exposure_motion;
+    EXPECT_EQ(m.shutter_s, 0.05);
+    const Vec3d open = m.open_to_world.block<3, 1>(0, 3), close = m.close_to_world.block<3, 1>(0, 3);
+    const double s = *f.trail_s;
+    const double span = std::min(s + 0.05, length) - std::max(s - 0.05, 0.0);  // kept within the trail
+    EXPECT_NEAR((close - open).norm(), span, 0.01 * span) << f.frame;
+    if (s > 0.05 && s < length - 0.05) {  // the frame's pose is the middle of the exposure
+      EXPECT_NEAR((0.5 * (open + close) - f.camera.position()).norm(), 0.0, 2e-3) << f.frame;
+    }
+    // The camera looks the same way relative to the trail: its forward axis barely turns.
+    const Vec3d forward = f.camera.camera_to_world.block<3, 1>(0, 2);
+    EXPECT_GT(forward.dot(m.open_to_world.block<3, 1>(0, 2)), 0.999);
+    EXPECT_GT(forward.dot(m.close_to_world.block<3, 1>(0, 2)), 0.999);
+  }
+}
+
+}  // namespace
+}  // namespace silva::world
