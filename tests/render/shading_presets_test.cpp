@@ -79,8 +79,8 @@ TEST(ShadingPresets, OvercastHasNoSunShading) {
   const Vec3d to_sun = sun_direction(overcast).cast<double>();
   const ShadowMap shadow = test::plane_shadow_map(to_sun, 256, 0.1, 4.0, 3.0);
   std::vector<uint8_t> lit, unshadowed;
-  shade_rgb({g, cam, overcast, &shadow, 1, "random", 0, 0.0f}, lit);
-  shade_rgb({g, cam, overcast, nullptr, 1, "random", 0, 0.0f}, unshadowed);
+  shade_rgb({g, cam, overcast, &shadow, 1, "random", 0, {}}, lit);
+  shade_rgb({g, cam, overcast, nullptr, 1, "random", 0, {}}, unshadowed);
   EXPECT_EQ(lit, unshadowed);
 }
 
