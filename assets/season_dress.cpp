@@ -6,33 +6,31 @@ namespace silva::assets {
 
 bool is_deciduous_foliage(Material m) {
   switch (m) {
-  case Material::Leaves:
-  case Material::ShrubLeaves:
-  case Material::NeedlesLarch:
-  case Material::LeavesBeech:
-  case Material::LeavesBirch:
-  case Material::LeavesOak:
-    return true;
-  default:
-    return false;
+    case Material::Leaves:
+    case Material::ShrubLeaves:
+    case Material::NeedlesLarch:
+    case Material::LeavesBeech:
+    case Material::LeavesBirch:
+    case Material::LeavesOak: return true;
+    default: return false;
   }
 }
 
-void dress_for_season(Mesh &mesh, Season season) {
-  if (season == Season::Summer)
-    return;
-  for (MeshPart &part : mesh.parts) {
-    if (!part.mask || !is_deciduous_foliage(part.material))
+void dress_for_season(Mesh& mesh, Season season) {
+  if (season == Season::Summer) return;
+  for (MeshPart& part : mesh.parts) {
+    if (!part.mask) continue;
+    if (part.material == Material::Fern) {  // bracken turns, then dies back, orange-brown
+      part.material = Material::AutumnLeaves;
+    } else if (!is_deciduous_foliage(part.material)) {
       continue;
-    if (season == Season::Winter) {
+    } else if (season == Season::Winter) {
       part.mask = bare_twig_mask();
       part.material = Material::BareTwigs;
     } else {
-      part.material = part.material == Material::NeedlesLarch
-                          ? Material::AutumnNeedles
-                          : Material::AutumnLeaves;
+      part.material = part.material == Material::NeedlesLarch ? Material::AutumnNeedles : Material::AutumnLeaves;
     }
   }
 }
 
-} // namespace silva::assets
+}  // namespace silva::assets

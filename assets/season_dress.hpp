@@ -1,20 +1,18 @@
 #pragma once
-/// @file Dresses a generated mesh for its season: deciduous leaf cards turn
-/// autumn-coloured, or become bare twig cards in winter (their coverage, and so
-/// the labels, follow the new mask).
+/// @file Dresses a generated mesh for its season: deciduous leaf cards turn autumn-coloured, or
+/// become bare twig cards in winter (their coverage, and so the labels, follow the new mask).
 #include "core/mesh.hpp"
 #include "core/season.hpp"
 
 namespace silva::assets {
 
-/// True for the card materials of deciduous trees and shrubs (larch needles
-/// included).
+/// True for the card materials of deciduous trees and shrubs (larch needles included).
 bool is_deciduous_foliage(Material m);
 
-/// Summer: unchanged. Autumn: deciduous leaf parts get AutumnLeaves, larch
-/// needles AutumnNeedles. Winter: deciduous foliage parts get the bare twig
-/// mask and BareTwigs (role unchanged: the bare crown is still canopy).
-/// Evergreen needles, grass, ferns and everything solid stay as they are.
-void dress_for_season(Mesh &mesh, Season season);
+/// Summer: unchanged. Autumn: deciduous leaf parts get AutumnLeaves, larch needles AutumnNeedles.
+/// Winter: deciduous foliage parts get the bare twig mask and BareTwigs (role unchanged: the bare
+/// crown is still canopy). Fern fronds get AutumnLeaves in both (standing dead bracken in
+/// winter). Evergreen needles, grass and everything solid stay as they are.
+void dress_for_season(Mesh& mesh, Season season);
 
-} // namespace silva::assets
+}  // namespace silva::assets

@@ -4,11 +4,11 @@ namespace silva {
 
 namespace {
 constexpr std::string_view kNames[] = {"summer", "autumn", "winter"};
-} // namespace
+}  // namespace
 
 std::string_view season_name(Season s) { return kNames[int(s)]; }
 
-bool parse_season(std::string_view name, Season &out) {
+bool parse_season(std::string_view name, Season& out) {
   for (int i = 0; i < 3; ++i)
     if (name == kNames[i]) {
       out = Season(i);
@@ -17,4 +17,4 @@ bool parse_season(std::string_view name, Season &out) {
   return false;
 }
 
-} // namespace silva
+}  // namespace silva

@@ -1,21 +1,20 @@
 #pragma once
-/// @file The season of a world: leaf colour, and bare deciduous trees in
-/// winter.
+/// @file The season of a world: leaf colour, and bare deciduous trees in winter.
 #include <string_view>
 
 namespace silva {
 
 /// Season of the vegetation (config vegetation.season).
 enum class Season : unsigned char {
-  Summer, ///< Green leaves.
-  Autumn, ///< Deciduous leaves and larch needles turn yellow, orange and brown.
-  Winter, ///< Deciduous trees and shrubs bare: twig cards instead of leaves.
+  Summer,  ///< Green leaves.
+  Autumn,  ///< Deciduous leaves, larch needles and ferns turn yellow, orange and brown.
+  Winter,  ///< Deciduous trees and shrubs bare (twig cards instead of leaves), ferns dead brown.
 };
 
 /// The config name of a season ("summer", "autumn", "winter").
 std::string_view season_name(Season s);
 
 /// Parses a season name; false when unknown.
-bool parse_season(std::string_view name, Season &out);
+bool parse_season(std::string_view name, Season& out);
 
-} // namespace silva
+}  // namespace silva

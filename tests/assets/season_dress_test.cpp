@@ -1,5 +1,4 @@
-// Seasons: the same tree shapes, dressed in autumn colours or bare twigs in
-// winter.
+// Seasons: the same tree shapes, dressed in autumn colours or bare twigs in winter.
 #include "assets/season_dress.hpp"
 
 #include <gtest/gtest.h>
@@ -11,55 +10,53 @@ namespace silva::assets {
 namespace {
 
 /// Variant 3 of the built-in generator `prefix` for `season`.
-Mesh variant(const char *prefix, Season season) {
-  const Factory *f = find_factory(prefix);
+Mesh variant(const char* prefix, Season season) {
+  const Factory* f = find_factory(prefix);
   EXPECT_NE(f, nullptr) << prefix;
   return generate_variant(*f, kDefaultAssetSeed, 3, season).mesh;
 }
 
 /// The mesh's card (masked) parts.
-std::vector<MeshPart> cards(const Mesh &m) {
+std::vector<MeshPart> cards(const Mesh& m) {
   std::vector<MeshPart> out;
-  for (const MeshPart &p : m.parts)
-    if (p.mask)
-      out.push_back(p);
+  for (const MeshPart& p : m.parts)
+    if (p.mask) out.push_back(p);
   return out;
 }
 
 TEST(SeasonDress, ShapesNeverDependOnTheSeason) {
-  for (const char *prefix : {"beech", "larch", "spruce", "hazel"}) {
+  for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern"}) {
     const Mesh summer = variant(prefix, Season::Summer);
     for (Season s : {Season::Autumn, Season::Winter}) {
       const Mesh dressed = variant(prefix, s);
       EXPECT_EQ(dressed.positions, summer.positions) << prefix;
       EXPECT_EQ(dressed.indices, summer.indices) << prefix;
       ASSERT_EQ(dressed.parts.size(), summer.parts.size()) << prefix;
-      for (size_t k = 0; k < summer.parts.size(); ++k)
-        EXPECT_EQ(dressed.parts[k].role, summer.parts[k].role);
+      for (size_t k = 0; k < summer.parts.size(); ++k) EXPECT_EQ(dressed.parts[k].role, summer.parts[k].role);
     }
   }
 }
 
-TEST(SeasonDress, AutumnTurnsDeciduousLeavesAndLarchNeedles) {
+TEST(SeasonDress, AutumnTurnsDeciduousLeavesLarchNeedlesAndFerns) {
   ASSERT_FALSE(cards(variant("beech", Season::Autumn)).empty());
-  for (const MeshPart &p : cards(variant("beech", Season::Autumn)))
-    EXPECT_EQ(p.material, Material::AutumnLeaves);
-  for (const MeshPart &p : cards(variant("hazel", Season::Autumn)))
-    EXPECT_EQ(p.material, Material::AutumnLeaves);
-  for (const MeshPart &p : cards(variant("larch", Season::Autumn)))
-    EXPECT_EQ(p.material, Material::AutumnNeedles);
-  for (const MeshPart &p : cards(variant("spruce", Season::Autumn)))
-    EXPECT_EQ(p.material, Material::NeedlesSpruce);
+  for (const MeshPart& p : cards(variant("beech", Season::Autumn))) EXPECT_EQ(p.material, Material::AutumnLeaves);
+  for (const MeshPart& p : cards(variant("hazel", Season::Autumn))) EXPECT_EQ(p.material, Material::AutumnLeaves);
+  for (const MeshPart& p : cards(variant("larch", Season::Autumn))) EXPECT_EQ(p.material, Material::AutumnNeedles);
+  for (const MeshPart& p : cards(variant("spruce", Season::Autumn))) EXPECT_EQ(p.material, Material::NeedlesSpruce);
+  for (Season s : {Season::Autumn, Season::Winter}) {
+    ASSERT_FALSE(cards(variant("fern", s)).empty());
+    for (const MeshPart& p : cards(variant("fern", s))) EXPECT_EQ(p.material, Material::AutumnLeaves);
+    for (const MeshPart& p : cards(variant("grass", s))) EXPECT_EQ(p.material, Material::Grass);
+  }
 }
 
 TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {
-  for (const char *prefix : {"beech", "birch", "oak", "larch", "hazel"})
-    for (const MeshPart &p : cards(variant(prefix, Season::Winter))) {
+  for (const char* prefix : {"beech", "birch", "oak", "larch", "hazel"})
+    for (const MeshPart& p : cards(variant(prefix, Season::Winter))) {
       EXPECT_EQ(p.material, Material::BareTwigs) << prefix;
       EXPECT_EQ(p.mask, bare_twig_mask()) << prefix;
     }
-  const Mesh summer = variant("pine", Season::Summer),
-             winter = variant("pine", Season::Winter);
+  const Mesh summer = variant("pine", Season::Summer), winter = variant("pine", Season::Winter);
   ASSERT_EQ(cards(winter).size(), cards(summer).size());
   for (size_t k = 0; k < cards(winter).size(); ++k) {
     EXPECT_EQ(cards(winter)[k].material, cards(summer)[k].material);
@@ -77,5 +74,5 @@ TEST(SeasonDress, NamesRoundTrip) {
   EXPECT_FALSE(parse_season("spring", unused));
 }
 
-} // namespace
-} // namespace silva::assets
+}  // namespace
+}  // namespace silva::assets
