@@ -10,17 +10,12 @@
 #include "assets/lod.hpp"
 #include "assets/mesh_builder.hpp"
 #include "assets/strips.hpp"
+#include "tests/assets/card_meshes.hpp"
 
 namespace silva::assets {
 namespace {
 
-/// `cards` unit cards (1 m x 1 m, 2 triangles each) 3 m apart along x, in one masked part.
-Mesh row_of_cards(int cards) {
-  MeshBuilder b;
-  b.begin_part(Role::TreeCanopy, Material::Leaves, beech_leaves_mask(), true);
-  for (int i = 0; i < cards; ++i) add_card(b, Vec3f(float(3 * i), 0, 0), Vec3f(0.5f, 0, 0), Vec3f(0, 0, 0.5f));
-  return b.finish();
-}
+using test::row_of_cards;
 
 /// Summed area of the triangles `indices` over `positions`.
 double area(const std::vector<uint32_t>& indices, const std::vector<Vec3f>& positions) {
@@ -77,14 +72,7 @@ TEST(CardThinning, CardsSharingVerticesWithAnotherPartStayWhole) {
 }
 
 TEST(ShadowCaster, IsLodOneWithItsCardsThinned) {
-  Mesh full = row_of_cards(40);
-  Mesh sphere = unit_icosphere(3);
-  MeshPart part;
-  part.index_count = uint32_t(sphere.indices.size());
-  part.role = Role::TreeTrunk;
-  part.material = Material::BarkBroadleaf;
-  sphere.parts = {part};
-  full.append(sphere);
+  const Mesh full = test::cards_and_sphere(40, Role::TreeTrunk, Material::BarkBroadleaf);
   const AssetGeometry geometry(build_lods(full).lods);
   ASSERT_GE(geometry.lods().size(), 2u);
   const Mesh& lod1 = geometry.lods()[1];
@@ -96,6 +84,7 @@ TEST(ShadowCaster, IsLodOneWithItsCardsThinned) {
   EXPECT_EQ(caster.parts[1].role, Role::TreeTrunk);
   EXPECT_EQ(&geometry.shadow_caster(), &caster);  // made once
 
+  const Mesh sphere = unit_icosphere(3);
   const AssetGeometry solid_only(std::vector<Mesh>{sphere});
   EXPECT_EQ(&solid_only.shadow_caster(), &solid_only.lods()[0]);
 }

@@ -6,26 +6,14 @@
 #include "assets/mesh_builder.hpp"
 #include "assets/strips.hpp"
 #include "assets/understory_masks.hpp"
+#include "tests/assets/card_meshes.hpp"
 #include "tests/common/mesh_checks.hpp"
 
 namespace silva::assets {
 namespace {
 
-/// A mesh with a solid icosphere part and `cards` unit cards in a row.
-Mesh sphere_and_cards(int cards) {
-  MeshBuilder b;
-  b.begin_part(Role::TreeCanopy, Material::Leaves, beech_leaves_mask(), true);
-  for (int i = 0; i < cards; ++i) add_card(b, Vec3f(float(3 * i), 0, 0), Vec3f(0.5f, 0, 0), Vec3f(0, 0, 0.5f));
-  Mesh m = b.finish();
-  Mesh sphere = unit_icosphere(3);
-  MeshPart part;
-  part.index_count = uint32_t(sphere.indices.size());
-  part.role = Role::Obstacle;
-  part.material = Material::Rock;
-  sphere.parts = {part};
-  m.append(sphere);
-  return m;
-}
+/// A mesh with `cards` unit cards in a row (part 0) and a solid icosphere (part 1).
+Mesh sphere_and_cards(int cards) { return test::cards_and_sphere(cards, Role::Obstacle, Material::Rock); }
 
 TEST(Lod, CardsAreKeptWholeSoTheirCoverageAndLabelsStay) {
   const Mesh full = sphere_and_cards(10);
