@@ -39,11 +39,6 @@ Mat4d Camera::world_to_camera() const {
   return m;
 }
 
-Vec3d Camera::ray_direction(int u, int v) const {
-  const Vec3d d((u + 0.5 - cx) / fx, (v + 0.5 - cy) / fy, 1.0);
-  return camera_to_world.block<3, 3>(0, 0) * d;
-}
-
 Mat3d rotation_from_angles(double yaw_deg, double pitch_deg, double roll_deg) {
   const Mat3d rz = Eigen::AngleAxisd(yaw_deg * kDegToRad, Vec3d::UnitZ()).toRotationMatrix();
   const Mat3d ry = Eigen::AngleAxisd(-pitch_deg * kDegToRad, Vec3d::UnitY()).toRotationMatrix();

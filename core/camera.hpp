@@ -22,7 +22,13 @@ struct Camera {
   /// Camera centre in world coordinates.
   Vec3d position() const { return camera_to_world.block<3, 1>(0, 3); }
   /// World-space direction (unnormalised, camera z = 1) of the ray through pixel centre (u+0.5, v+0.5).
-  Vec3d ray_direction(int u, int v) const;
+  Vec3d ray_direction(int u, int v) const { return world_direction(ray_x(u), ray_y(v)); }
+  /// Camera-space x / z of the ray through pixel column u's centres.
+  double ray_x(int u) const { return (u + 0.5 - cx) / fx; }
+  /// Camera-space y / z of the ray through pixel row v's centres.
+  double ray_y(int v) const { return (v + 0.5 - cy) / fy; }
+  /// World-space direction of the camera-space direction (x, y, 1): ray_direction from its parts.
+  Vec3d world_direction(double x, double y) const { return camera_to_world.block<3, 3>(0, 0) * Vec3d(x, y, 1.0); }
 };
 
 /// Camera-to-world rotation R = Rz(yaw) * Ry(-pitch) * Rx(roll) * B (CONTRACT.md), angles in degrees.

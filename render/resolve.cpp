@@ -1,8 +1,10 @@
 #include "render/resolve.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "render/raster_conventions.hpp"
@@ -33,7 +35,8 @@ void write_miss(GBuffer& g, size_t i) {
   g.variation[i] = 0;
 }
 
-/// World-space data of one (instance, triangle) pair, prepared once per run of pixels that share it.
+/// World-space data of one (instance, triangle) pair, prepared once and reused by every pixel
+/// of the frame's row block that sees it.
 struct HitTriangle {
   uint32_t instance = kNoInstance, triangle = 0;  ///< Which triangle this is (kNoInstance: none yet).
   const Instance* inst = nullptr;                 ///< Its instance.
@@ -49,7 +52,7 @@ struct HitTriangle {
   Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
 
   /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`, seen from `origin` (the
-  /// instance's transforms are reused while consecutive pixels stay on one instance).
+  /// instance's transforms are kept when the slot held the same instance before).
   void prepare(const Scene& scene, uint32_t instance_index, uint32_t lod, uint32_t triangle_index,
                const Vec3d& origin) {
     if (instance_index != instance) {
@@ -75,15 +78,35 @@ struct HitTriangle {
   }
 };
 
-/// Re-intersects pixel (u, v)'s centre ray with its triangle and writes the surface.
-void write_hit(const Camera& cam, const HitTriangle& h, int u, int v, GBuffer& g, size_t i) {
+/// Slots of the direct-mapped cache of prepared triangles (a foliage card's triangle is seen by
+/// pixels of several rows; a quarter of a frame's hits change triangle from their left neighbour).
+constexpr size_t kTriangleSlots = 256;
+
+/// A thread's prepared triangles, indexed by a hash of (instance, triangle).
+class TriangleCache {
+ public:
+  /// The prepared triangle `triangle` of `instance` (LOD `lod`), preparing it on a miss.
+  const HitTriangle& get(const Scene& scene, uint32_t instance, uint32_t lod, uint32_t triangle, const Vec3d& origin) {
+    const uint32_t h = (instance * 0x9E3779B1u) ^ (triangle * 0x85EBCA77u);
+    HitTriangle& slot = slots_[(h ^ (h >> 15)) % kTriangleSlots];
+    if (slot.instance != instance || slot.triangle != triangle) slot.prepare(scene, instance, lod, triangle, origin);
+    return slot;
+  }
+
+ private:
+  std::vector<HitTriangle> slots_ = std::vector<HitTriangle>(kTriangleSlots);
+};
+
+/// Re-intersects a pixel's centre ray with its triangle and writes the surface.
+/// (ray_x, ray_y) is the pixel's camera-space ray (Camera::ray_x, ray_y).
+void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray_y, GBuffer& g, size_t i) {
   const Vec3d* p = h.p;
   const Vec3d& e1 = h.e1;
   const Vec3d& e2 = h.e2;
   const Mesh& mesh = *h.mesh;
   const uint32_t* idx = h.idx;
   const Vec3d origin = cam.position();
-  const Vec3d dir = cam.ray_direction(u, v);  // camera z component 1: t is metric z
+  const Vec3d dir = cam.world_direction(ray_x, ray_y);  // camera z component 1: t is metric z
   const Vec3d pvec = dir.cross(e2);
   const double det = e1.dot(pvec);
   double b1 = 1.0 / 3.0, b2 = 1.0 / 3.0, t = 0.0;
@@ -139,19 +162,24 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
                      std::span<const uint32_t> instance_lod, GBuffer& out) {
   if (out.width != vis.width || out.height != vis.height || out.depth.size() != vis.size())
     out.resize(vis.width, vis.height);
+  std::vector<double> ray_x(size_t(vis.width));
+  for (int u = 0; u < vis.width; ++u) ray_x[size_t(u)] = camera.ray_x(u);
+  tbb::enumerable_thread_specific<TriangleCache> caches;
   tbb::parallel_for(tbb::blocked_range<int>(0, vis.height, 8), [&](const tbb::blocked_range<int>& rows) {
-    HitTriangle h;
+    TriangleCache& cache = caches.local();
+    const HitTriangle* h = nullptr;
     const Vec3d origin = camera.position();
     for (int v = rows.begin(); v != rows.end(); ++v) {
+      const double ray_y = camera.ray_y(v);
       for (int u = 0; u < vis.width; ++u) {
         const size_t i = size_t(v) * size_t(vis.width) + size_t(u);
         const uint32_t inst = vis.instance[i];
         if (inst == kNoInstance) {
           write_miss(out, i);
         } else {
-          if (inst != h.instance || vis.triangle[i] != h.triangle)
-            h.prepare(scene, inst, instance_lod[inst], vis.triangle[i], origin);
-          write_hit(camera, h, u, v, out, i);
+          if (!h || inst != h->instance || vis.triangle[i] != h->triangle)
+            h = &cache.get(scene, inst, instance_lod[inst], vis.triangle[i], origin);
+          write_hit(camera, *h, ray_x[size_t(u)], ray_y, out, i);
         }
       }
     }
