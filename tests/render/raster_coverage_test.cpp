@@ -1,6 +1,7 @@
 // Coverage known-answer tests: exact sample coverage with the top-left rule, watertight meshes.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <random>
 
@@ -210,6 +211,50 @@ TEST(RasterCoverage, FloorCrossingNearPlaneAndGuardBandIsWatertight) {
     if (far > 100.0) {
       EXPECT_EQ(stats.fragments_covered, expected) << "double coverage";
     }
+  }
+}
+
+TEST(RasterCoverage, TriangleFanClippedAndUnclippedCoversEachSampleOnce) {
+  // A fan of 360 triangles on the floor y = 1 (view space) sharing its centre and its spokes (rim
+  // radius 3 m). With the centre behind the camera every triangle is clipped at the near plane;
+  // with it in front, triangles that stay in front need no clipping (SIMD setup) and those that
+  // reach behind the camera do, so clipped and unclipped triangles share slanted spokes on screen.
+  // Every sample whose floor point is inside the rim is covered, none outside it, none twice.
+  const int W = 96, H = 64, kSpokes = 360;
+  const double kRadius = 3.0, kPi = 3.14159265358979323846;
+  const Camera cam = screen_camera(W, H, 1000.0);
+  Renderer renderer;
+  for (const double centre_z : {-0.5, 2.0}) {
+    Mesh m;
+    m.positions.emplace_back(0.0f, 1.0f, float(centre_z));
+    for (int k = 0; k < kSpokes; ++k) {
+      const double a = 2.0 * kPi * k / kSpokes;
+      m.positions.emplace_back(float(kRadius * std::cos(a)), 1.0f, float(centre_z + kRadius * std::sin(a)));
+    }
+    for (uint32_t k = 0; k < uint32_t(kSpokes); ++k) m.indices.insert(m.indices.end(), {0u, 1u + (k + 1) % kSpokes, 1u + k});
+    m.uvs.assign(m.positions.size(), Vec2f::Zero());
+    m.compute_normals();
+    test::one_part(m, Role::Ground, Material::Ground, true);
+    OwnedScene s;
+    s.add_instance(s.add_mesh(std::move(m)));
+    RenderStats stats;
+    const VisibilityBuffer& vis = renderer.render_visibility(s.scene, cam, RenderOptions{}, &stats);
+    int inside = 0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const double ry = (y + 0.5 - cam.cy) / cam.fy, rx = (x + 0.5 - cam.cx) / cam.fx;
+        const double r = ry > 0.0 ? std::hypot(rx / ry, 1.0 / ry - centre_z) : 1e9;  // floor point's distance
+        const bool hit = vis.instance[size_t(y) * W + size_t(x)] != kNoInstance;
+        if (r < kRadius * std::cos(kPi / kSpokes) - 0.01) {
+          ++inside;
+          ASSERT_TRUE(hit) << "crack at " << x << "," << y << ", centre z " << centre_z;
+        } else if (r > kRadius + 0.01) {
+          ASSERT_FALSE(hit) << "outside the rim at " << x << "," << y << ", centre z " << centre_z;
+        }
+      }
+    EXPECT_GT(inside, W * H / 8) << "centre z " << centre_z;
+    EXPECT_GT(stats.triangles_clipped, 0u) << "centre z " << centre_z;
+    EXPECT_EQ(stats.fragments_covered, stats.pixels_covered) << "double coverage, centre z " << centre_z;
   }
 }
 
