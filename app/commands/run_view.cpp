@@ -30,7 +30,7 @@ int run_view(const ViewRequest& request, const Reporter& reporter) {
   while (!interrupt_requested()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server.stop();
   serving.join();
-  throw Interrupted("view stopped");
+  throw Interrupted("interrupted: the view stopped");
 }
 
 }  // namespace silva::app

@@ -85,7 +85,9 @@ web::Reply ViewSession::frame(const web::Request& r) {
   }
   const ViewFrame f = w_on_screen->render(pose, mode, w, h);
   const nlohmann::json placed = {{"x", f.position.x()}, {"y", f.position.y()}, {"z", f.position.z()},
-                                 {"ground", f.ground_z}, {"ms", f.render_ms}, {"generation", generation}};
+                                 {"ground", f.ground_z}, {"ms", f.render_ms}, {"schedule_ms", f.schedule_ms},
+                                 {"raster_ms", f.raster_ms}, {"shade_ms", f.shade_ms}, {"encode_ms", f.encode_ms},
+                                 {"generation", generation}};
   return {200, "image/jpeg", std::string(f.jpeg.begin(), f.jpeg.end()), {{"X-Silva-Pose", placed.dump()}}};
 }
 

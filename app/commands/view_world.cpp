@@ -128,7 +128,12 @@ ViewFrame ViewWorld::render(const ViewPose& pose, ViewMode mode, int width, int 
   const systems::CaptureSettings settings{setup_.preset, setup_.ontology, mode_outputs(mode), {}};
   std::shared_ptr<systems::FrameWork> work = schedule_->render_view(frame, settings);
   ViewFrame out;
-  out.jpeg = io::encode_jpeg_rgb8(view_image(setup_.world, settings, mode, *work), width, height, kViewJpegQuality);
+  out.schedule_ms = clock.seconds() * 1e3;
+  out.raster_ms = (work->render_s + work->shadow_s) * 1e3;
+  const std::vector<uint8_t> image = view_image(setup_.world, settings, mode, *work);
+  out.shade_ms = clock.seconds() * 1e3 - out.schedule_ms;
+  out.jpeg = io::encode_jpeg_rgb8(image, width, height, kViewJpegQuality);
+  out.encode_ms = clock.seconds() * 1e3 - out.schedule_ms - out.shade_ms;
   out.position = frame.camera.position();
   out.ground_z = world::terrain_height(setup_.world.terrain, out.position.x(), out.position.y());
   out.render_ms = clock.seconds() * 1e3;

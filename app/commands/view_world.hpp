@@ -38,6 +38,10 @@ struct ViewFrame {
   Vec3d position = Vec3d::Zero();   ///< The camera position rendered (walk: z resolved).
   double ground_z = 0;              ///< Terrain height under the camera.
   double render_ms = 0;             ///< Schedule frame + shading + encoding, milliseconds.
+  double schedule_ms = 0;           ///< Of which Stream .. Render (chunks, scene, visibility, shadow map).
+  double raster_ms = 0;             ///< Of which the visibility pass and the shadow map.
+  double shade_ms = 0;              ///< Of which shading (rgb) or label colours.
+  double encode_ms = 0;             ///< Of which JPEG encoding.
 };
 
 /// JPEG quality of streamed frames.

@@ -61,6 +61,7 @@ DevtoolsBrowser::DevtoolsBrowser(const fs::path& chromium, const fs::path& scrat
   const std::string target = call("Target.createTarget", {{"url", url}}, true)["targetId"];
   session_ = call("Target.attachToTarget", {{"targetId", target}, {"flatten", true}}, true)["sessionId"];
   call("Runtime.enable");
+  call("Emulation.setFocusEmulationEnabled", {{"enabled", true}});
 }
 
 DevtoolsBrowser::~DevtoolsBrowser() {

@@ -46,7 +46,7 @@ async function requestFrame() {
     ctx2d.drawImage(bitmap, 0, 0, canvas.width, canvas.height);
     silva.framesDrawn++;
     if (full) silva.fullFrames++;
-    if (silva.walk && poseKey(p) === poseKey(silva.pose)) silva.pose.z = placed.z;
+    if (silva.walk) silva.pose.z = placed.z;
     silva.ground = placed.ground;
     if (placed.generation !== silva.generation) { silva.generation = placed.generation; refreshState(); }
     shownKey = poseKey(p) + '|' + silva.view + '|' + w + '|' + placed.generation;
@@ -277,9 +277,9 @@ async function refreshState() {
     if (firstState) {
       firstState = false;
       silva.pose.x = s.start.x; silva.pose.y = s.start.y; silva.pose.yaw = s.start.yaw;
-      loadMap();
     }
-    if (s.generation !== silva.generation) { silva.generation = s.generation; loadMap(); }
+    silva.generation = s.generation;
+    if (silva.fullFrames > 0) loadMap();  // after the first frame: building the map takes a core
     $('density').value = config.vegetation.density;
     $('elevation').value = config.terrain.max_elevation;
     $('trail').checked = config.trail.enabled;
