@@ -68,6 +68,8 @@ web::Reply ViewSession::frame(const web::Request& r) {
   pose.yaw_deg = number_param(r, "yaw", 0);
   pose.pitch_deg = std::clamp(number_param(r, "pitch", 0), -90.0, 90.0);
   pose.walk = number_param(r, "walk", 0) != 0;
+  if (r.params.count("fx") && r.params.count("fy"))
+    pose.from = Eigen::Vector2d(number_param(r, "fx", 0), number_param(r, "fy", 0));
   const int w = int(number_param(r, "w", 960)), h = int(number_param(r, "h", 540));
   if (w < 16 || h < 16 || w > kMaxFrameWidth || h > kMaxFrameHeight)
     throw InputError("w, h: 16 .. " + std::to_string(kMaxFrameWidth) + " x " + std::to_string(kMaxFrameHeight));
@@ -87,7 +89,7 @@ web::Reply ViewSession::frame(const web::Request& r) {
   const nlohmann::json placed = {{"x", f.position.x()}, {"y", f.position.y()}, {"z", f.position.z()},
                                  {"ground", f.ground_z}, {"ms", f.render_ms}, {"schedule_ms", f.schedule_ms},
                                  {"raster_ms", f.raster_ms}, {"shade_ms", f.shade_ms}, {"encode_ms", f.encode_ms},
-                                 {"generation", generation}};
+                                 {"blocked", f.blocked}, {"generation", generation}};
   return {200, "image/jpeg", std::string(f.jpeg.begin(), f.jpeg.end()), {{"X-Silva-Pose", placed.dump()}}};
 }
 

@@ -1,14 +1,13 @@
 #include "app/commands/view_world.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/jpeg_writer.hpp"
+#include "io/json_read.hpp"
 #include "io/label_images.hpp"
 #include "io/ontology_file.hpp"
 #include "io/output_types.hpp"
@@ -16,6 +15,7 @@
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
 #include "systems/write_dataset.hpp"
+#include "world/chunk_regions.hpp"
 #include "world/terrain.hpp"
 
 namespace silva::app {
@@ -58,14 +58,6 @@ std::vector<ChunkCoord> capture_region_chunks(const Config& cfg) {
   return coords;
 }
 
-/// The text of a file ("" when absent).
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 bool parse_view_mode(std::string_view name, ViewMode& mode) {
@@ -103,6 +95,14 @@ std::vector<uint8_t> view_image(const world::WorldContext& ctx, const systems::C
 
 ViewWorld::ViewWorld(LoadedConfig loaded) : loaded_(std::move(loaded)), setup_(make_run_setup(loaded_)) {
   schedule_ = std::make_unique<WorldSchedule>(setup_.world, 256);
+  crowns_ = std::make_unique<world::CrownProfiles>(*setup_.library);
+}
+
+bool ViewWorld::blocked(const Vec3d& eye) {
+  const world::WorldContext& ctx = setup_.world;
+  const auto chunks = schedule_->ecs().resource<world::ChunkCache>().require(
+      ctx, world::chunks_in_disc(eye.x(), eye.y(), world::ClearanceProbe::reach(ctx, 0.0), ctx.chunk_size()));
+  return !world::ClearanceProbe(ctx, *crowns_, chunks, eye.x(), eye.y(), 0.0).clear(eye, false);
 }
 
 world::PlannedFrame ViewWorld::view_frame(const ViewPose& pose, int width, int height) const {
@@ -124,7 +124,15 @@ world::PlannedFrame ViewWorld::view_frame(const ViewPose& pose, int width, int h
 ViewFrame ViewWorld::render(const ViewPose& pose, ViewMode mode, int width, int height) {
   const std::lock_guard lock(mutex_);
   const Stopwatch clock;
-  const world::PlannedFrame frame = view_frame(pose, width, height);
+  world::PlannedFrame frame = view_frame(pose, width, height);
+  bool refused = false;
+  if (pose.walk && pose.from && blocked(frame.camera.position())) {
+    ViewPose back = pose;
+    back.position.head<2>() = *pose.from;
+    const world::PlannedFrame there = view_frame(back, width, height);
+    refused = !blocked(there.camera.position());
+    if (refused) frame = there;
+  }
   const systems::CaptureSettings settings{setup_.preset, setup_.ontology, mode_outputs(mode), {}};
   std::shared_ptr<systems::FrameWork> work = schedule_->render_view(frame, settings);
   ViewFrame out;
@@ -135,6 +143,7 @@ ViewFrame ViewWorld::render(const ViewPose& pose, ViewMode mode, int width, int 
   out.jpeg = io::encode_jpeg_rgb8(image, width, height, kViewJpegQuality);
   out.encode_ms = clock.seconds() * 1e3 - out.schedule_ms - out.shade_ms;
   out.position = frame.camera.position();
+  out.blocked = refused;
   out.ground_z = world::terrain_height(setup_.world.terrain, out.position.x(), out.position.y());
   out.render_ms = clock.seconds() * 1e3;
   last_ = std::move(work);
@@ -165,7 +174,7 @@ nlohmann::json ViewWorld::capture(const ViewPose& pose) {
   record.config.captures.poses_file = pose_path.string();
   const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(record), io::FolderMode::Resume);
 
-  nlohmann::json poses = fs::exists(pose_path) ? nlohmann::json::parse(read_text(pose_path), nullptr, false)
+  nlohmann::json poses = fs::exists(pose_path) ? io::parse_json_text(io::read_text_file(pose_path), pose_path.string())
                                                : nlohmann::json{{"poses", nlohmann::json::array()}};
   if (!poses.is_object() || !poses.contains("poses") || !poses["poses"].is_array())
     throw InputError(pose_path.string() + ": not a pose file of the view ({\"poses\": [...]}); move it away");

@@ -16,6 +16,7 @@
 #include "app/config/run_setup.hpp"
 #include "app/schedule/world_schedule.hpp"
 #include "world/class_map.hpp"
+#include "world/pose_clearance.hpp"
 
 namespace silva::app {
 
@@ -29,6 +30,9 @@ bool parse_view_mode(std::string_view name, ViewMode& mode);
 struct ViewPose {
   Vec3d position = Vec3d::Zero();  ///< World position; z ignored when `walk`.
   bool walk = false;               ///< Camera held camera.ground_height above the terrain.
+  /// Walking: where the camera comes from; a step from a clear spot into one closer than
+  /// captures.clearance to a trunk or other solid is refused (the camera stays there).
+  std::optional<Eigen::Vector2d> from;
   double yaw_deg = 0, pitch_deg = 0;  ///< Looking direction.
 };
 
@@ -37,6 +41,7 @@ struct ViewFrame {
   std::vector<uint8_t> jpeg;        ///< The image, JPEG.
   Vec3d position = Vec3d::Zero();   ///< The camera position rendered (walk: z resolved).
   double ground_z = 0;              ///< Terrain height under the camera.
+  bool blocked = false;             ///< The step was refused (walking into a solid).
   double render_ms = 0;             ///< Schedule frame + shading + encoding, milliseconds.
   double schedule_ms = 0;           ///< Of which Stream .. Render (chunks, scene, visibility, shadow map).
   double raster_ms = 0;             ///< Of which the visibility pass and the shadow map.
@@ -81,10 +86,14 @@ class ViewWorld {
  private:
   /// The planned frame of `pose` at `width` x `height` (sequence "view", frame 0).
   world::PlannedFrame view_frame(const ViewPose& pose, int width, int height) const;
+  /// True when a ground camera at `eye` is closer than captures.clearance to a solid (the rules of
+  /// planned poses, world/pose_clearance.hpp).
+  bool blocked(const Vec3d& eye);
 
   LoadedConfig loaded_;
   RunSetup setup_;
   std::unique_ptr<WorldSchedule> schedule_;
+  std::unique_ptr<world::CrownProfiles> crowns_;  ///< For the clearance probe.
   std::shared_ptr<systems::FrameWork> last_;  ///< The last rendered frame (probe).
   mutable std::mutex mutex_;                  ///< Serialises schedule use and last_.
   std::mutex map_mutex_;                      ///< Guards map_.

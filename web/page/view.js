@@ -10,7 +10,7 @@ const ctx2d = canvas.getContext('2d');
 const silva = window.silva = {
   pose: { x: 0, y: 0, z: 0, yaw: 0, pitch: 0 },
   walk: true, view: 'rgb', ground: 0, generation: -1, framesDrawn: 0, fullFrames: 0,
-  still: false, lastError: '', lastCapture: null, state: null, follow: null,
+  still: false, lastError: '', lastCapture: null, state: null, follow: null, placed: null,
 };
 
 const keys = new Set();
@@ -36,6 +36,7 @@ async function requestFrame() {
   const p = silva.pose;
   const q = new URLSearchParams({ x: p.x, y: p.y, z: p.z, yaw: p.yaw, pitch: p.pitch, walk: silva.walk ? 1 : 0,
     view: silva.view, w, h });
+  if (silva.walk && silva.placed) { q.set('fx', silva.placed.x); q.set('fy', silva.placed.y); }  // collide with solids
   inFlight = true;
   try {
     const res = await fetch('frame?' + q);
@@ -47,6 +48,8 @@ async function requestFrame() {
     silva.framesDrawn++;
     if (full) silva.fullFrames++;
     if (silva.walk) silva.pose.z = placed.z;
+    if (placed.blocked) { silva.pose.x = placed.x; silva.pose.y = placed.y; }
+    silva.placed = placed;
     silva.ground = placed.ground;
     if (placed.generation !== silva.generation) { silva.generation = placed.generation; refreshState(); }
     shownKey = poseKey(p) + '|' + silva.view + '|' + w + '|' + placed.generation;
@@ -322,6 +325,7 @@ $('map').addEventListener('click', (e) => {
   silva.pose.x = pl.x0 + (e.clientX - r.left) / r.width * pl.width * pl.metres_per_pixel;
   silva.pose.y = pl.y1 - (e.clientY - r.top) / r.height * pl.height * pl.metres_per_pixel;
   silva.follow = null;
+  silva.placed = null;  // a teleport is no step: nothing to collide with on the way
   setWalk(true);
   moved();
 });
