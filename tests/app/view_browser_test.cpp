@@ -97,7 +97,7 @@ TEST(ViewBrowser, ExploreCaptureAndReportErrors) {
     const ProcessResult generated = run_silva(gen, dir);
     ASSERT_EQ(generated.code, 0) << generated.err;
     const auto captured = folder_files(view_out / "0000000012" / "custom");
-    EXPECT_EQ(captured.size(), 9u) << "camera + 8 output files";
+    EXPECT_EQ(captured.size(), 10u) << "camera, instance table and 8 images";
     EXPECT_EQ(file_differences(captured, folder_files(dir / "gen-out" / "0000000012" / "custom")), "");
 
     // A bad value: the page shows the CLI's message.

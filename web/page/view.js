@@ -26,13 +26,17 @@ function poseKey(p) {
 }
 
 // ---- frames ---------------------------------------------------------------------------------
+// What a frame of the current pose and view at width `w` shows.
+const frameKey = (w) => poseKey(silva.pose) + '|' + silva.view + '|' + w + '|' + silva.generation;
+
 async function requestFrame() {
+  silva.still = shownKey === frameKey(canvas.width);  // the full frame of this very pose and view is shown
   if (inFlight || !silva.state) return;
   const moving = performance.now() - lastMove < 250;
   const full = !moving;
   const w = full ? canvas.width : canvas.width / 2, h = full ? canvas.height : canvas.height / 2;
-  const key = poseKey(silva.pose) + '|' + silva.view + '|' + w + '|' + silva.generation;
-  if (key === shownKey) { silva.still = full; return; }
+  const key = frameKey(w);
+  if (key === shownKey) return;
   const p = silva.pose;
   const q = new URLSearchParams({ x: p.x, y: p.y, z: p.z, yaw: p.yaw, pitch: p.pitch, walk: silva.walk ? 1 : 0,
     view: silva.view, w, h });
@@ -52,8 +56,8 @@ async function requestFrame() {
     silva.placed = placed;
     silva.ground = placed.ground;
     if (placed.generation !== silva.generation) { silva.generation = placed.generation; refreshState(); }
-    shownKey = poseKey(p) + '|' + silva.view + '|' + w + '|' + placed.generation;
-    silva.still = full && shownKey === key;
+    shownKey = key.slice(0, key.lastIndexOf('|') + 1) + placed.generation;
+    silva.still = shownKey === frameKey(canvas.width);
     frameTimes.push(performance.now());
     frameTimes = frameTimes.filter((t) => t > performance.now() - 2000);
     $('fps').textContent = (frameTimes.length / 2).toFixed(1) + ' frames/s, ' + placed.ms.toFixed(0) + ' ms';
