@@ -9,7 +9,7 @@
 #include <thread>
 #include <unistd.h>
 
-#include "common/scratch_dirs.hpp"
+#include "tests/common/scratch_dirs.hpp"
 #include "web/view_server.hpp"
 
 namespace silva::web {
