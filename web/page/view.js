@@ -222,16 +222,16 @@ function showError(text) {
   $('error').textContent = silva.lastError;
 }
 
+// The menu's keys, every one: the world after Apply is the command's config plus exactly what the page shows.
 function menuOverrides() {
   const list = [];
   if (!config) return list;
-  const num = (id, key, current) => { const v = $(id).value; if (v !== '' && +v !== current) list.push(`${key}=${v}`); };
-  num('density', 'vegetation.density', config.vegetation.density);
-  num('elevation', 'terrain.max_elevation', config.terrain.max_elevation);
-  if ($('trail').checked !== config.trail.enabled) list.push(`trail.enabled=${$('trail').checked}`);
-  if ($('ground').checked !== config.vegetation.ground) list.push(`vegetation.ground=${$('ground').checked}`);
-  if ($('time').value !== config.lighting.time_of_day) list.push(`lighting.time_of_day=${$('time').value}`);
-  if ($('weather').value !== config.lighting.weather) list.push(`lighting.weather=${$('weather').value}`);
+  const value = (id, key) => { const v = $(id).value; if (v !== '') list.push(`${key}=${v}`); };
+  value('density', 'vegetation.density');
+  value('elevation', 'terrain.max_elevation');
+  list.push(`trail.enabled=${$('trail').checked}`, `vegetation.ground=${$('ground').checked}`);
+  value('time', 'lighting.time_of_day');
+  value('weather', 'lighting.weather');
   return list;
 }
 
@@ -252,8 +252,7 @@ $('key-add').addEventListener('click', () => {
 });
 
 async function apply() {
-  const all = [...silva.state.edits.overrides.filter((o) => !isMenuKey(o) && !overrides.includes(o)), ...overrides,
-    ...menuOverrides()];
+  const all = [...overrides, ...menuOverrides()];
   const pending = $('key').value.trim();
   if (pending) all.push(pending);
   const res = await fetch('config', { method: 'POST', headers: { 'Content-Type': 'application/json' },
@@ -273,6 +272,7 @@ $('seed-copy').addEventListener('click', () => navigator.clipboard && navigator.
 
 // ---- state polling ------------------------------------------------------------------------------
 let firstState = true;
+let menuGeneration = -1;   // the world whose config the menu fields show
 async function refreshState() {
   try {
     const s = await (await fetch('state')).json();
@@ -280,19 +280,25 @@ async function refreshState() {
     config = s.config;
     $('status').textContent = s.building ? 'building the world…' : `seed ${s.seed}`;
     if (s.error) showError(s.error);
-    if (firstState || document.activeElement !== $('seed')) $('seed').value = String(s.seed);
     if (firstState) {
       firstState = false;
       silva.pose.x = s.start.x; silva.pose.y = s.start.y; silva.pose.yaw = s.start.yaw;
+      overrides = s.edits.overrides.filter((o) => !isMenuKey(o));
+      renderOverrides();
     }
     silva.generation = s.generation;
     if (silva.fullFrames > 0) loadMap();  // after the first frame: building the map takes a core
+    if (menuGeneration === s.generation) return;  // the menu shows this world already (or edits to it)
+    menuGeneration = s.generation;
+    $('seed').value = String(s.seed);
     $('density').value = config.vegetation.density;
     $('elevation').value = config.terrain.max_elevation;
     $('trail').checked = config.trail.enabled;
     $('ground').checked = config.vegetation.ground;
-    $('time').value = config.lighting.time_of_day;
-    $('weather').value = config.lighting.weather;
+    for (const [id, v] of [['time', config.lighting.time_of_day], ['weather', config.lighting.weather]]) {
+      if (![...$(id).options].some((o) => o.value === v)) $(id).add(new Option(v, v));  // a preset of the config's own
+      $(id).value = v;
+    }
   } catch (e) { /* next poll */ }
 }
 setInterval(refreshState, 1000);
