@@ -6,6 +6,7 @@
 #            matplotlib/numpy for the plots)
 #   --tidy   also clang-tidy, for `make tidy`
 # ccache is optional (CMake uses it when present) and git only names the revision; neither is listed.
+# chromium is only for the browser test of `silva view` (headless, driven over its DevTools pipe).
 set -euo pipefail
 
 PKGS=(
@@ -14,8 +15,9 @@ PKGS=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libassimp-dev libfcl-dev libtbb-dev libmeshoptimizer-dev libhwy-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinygltf-dev
-  libdeflate-dev libxxhash-dev libssl-dev
+  libdeflate-dev libxxhash-dev libssl-dev libcpp-httplib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  chromium
 )
 BENCH_PKGS=(
   libembree-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0

@@ -49,15 +49,7 @@ io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& 
 void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
   const world::PlannedFrame& f = work.frame;
   if (settings.outputs.has(io::OutputType::Rgb)) {
-    const Stopwatch clock;
-    const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
-                                 f.sequence, uint64_t(f.frame), frame_camera_model(ctx.config, f)};
-    work.bare_soil_pixels = render::shade_rgb(in, work.rgb).bare_soil_pixels;
-    if (ctx.config.camera.antialias) {
-      render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
-      work.rgb.swap(work.rgb_scratch);
-    }
-    work.shade_s = clock.seconds();
+    shade_frame(ctx, settings, work);
   } else {
     work.shade_s = 0;
     work.bare_soil_pixels = 0;
@@ -95,6 +87,19 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 }
 
 }  // namespace
+
+void shade_frame(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+  const world::PlannedFrame& f = work.frame;
+  const Stopwatch clock;
+  const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
+                               f.sequence, uint64_t(f.frame), frame_camera_model(ctx.config, f)};
+  work.bare_soil_pixels = render::shade_rgb(in, work.rgb).bare_soil_pixels;
+  if (ctx.config.camera.antialias) {
+    render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
+    work.rgb.swap(work.rgb_scratch);
+  }
+  work.shade_s = clock.seconds();
+}
 
 io::LabelPlanes label_planes(const render::GBuffer& g) {
   return {g.width, g.height, g.depth, g.normal, g.role, g.instance_id};

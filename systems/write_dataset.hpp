@@ -11,6 +11,7 @@
 #include "io/label_planes.hpp"
 #include "io/output_types.hpp"
 #include "render/gbuffer.hpp"
+#include "systems/render_views.hpp"
 #include "world/plan_captures.hpp"
 
 namespace silva::systems {
@@ -48,6 +49,10 @@ struct DatasetWriter {
   ProgressFn progress;                       ///< Told after each frame (may be empty).
   int total = 0;                             ///< Frames the run captures (for progress).
 };
+
+/// Shades `work`'s RGB from its G-buffer and shadow map as a capture does (the frame's camera model,
+/// edge antialiasing when camera.antialias), into work.rgb; sets shade_s and bare_soil_pixels.
+void shade_frame(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work);
 
 /// The planes the label encoders read, viewing `g`.
 io::LabelPlanes label_planes(const render::GBuffer& g);

@@ -24,6 +24,7 @@ constexpr std::pair<const char*, Handler (*)(CLI::App&)> kCommands[] = {
     {"validate", add_validate_command}, {"version", add_version_command},
     {"assets", add_assets_command},     {"merge", add_merge_command},
     {"bench", add_bench_command},       {"profile", add_profile_command},
+    {"view", add_view_command},
 };
 
 /// Exit codes (CONTRACT.md "Command line").

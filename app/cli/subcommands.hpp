@@ -23,6 +23,8 @@ Handler add_assets_command(CLI::App& root);
 Handler add_merge_command(CLI::App& root);
 /// `silva bench` (app/commands/cmd_bench.cpp).
 Handler add_bench_command(CLI::App& root);
+/// `silva view` (app/commands/cmd_view.cpp).
+Handler add_view_command(CLI::App& root);
 /// `silva profile placement` (app/commands/cmd_profile.cpp).
 Handler add_profile_command(CLI::App& root);
 

@@ -84,6 +84,13 @@ struct ProfilePlacementRequest {
   std::filesystem::path out_dir;    ///< --out DIR: placement.json, placement.csv, heatmaps, charts.
 };
 
+/// `silva view`: a local web page exploring the world, with captures into the output folder.
+struct ViewRequest {
+  ConfigSources sources;           ///< --config, --set, --seed (checked by the session).
+  std::string host = "127.0.0.1";  ///< --host: the address to listen on.
+  int port = 8080;                 ///< --port (0 = any free port, printed).
+};
+
 /// Runs the generate pipeline; returns the exit code. Throws InputError / IoError.
 int run_generate(const GenerateRequest& request, const Reporter& reporter);
 /// Builds (and exports) a world; returns the exit code. Throws InputError / IoError.
@@ -96,6 +103,8 @@ int run_assets_sheet(const AssetsSheetRequest& request, const Reporter& reporter
 int run_merge(const MergeRequest& request, const Reporter& reporter);
 /// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
 int run_bench(const BenchRequest& request, const Reporter& reporter);
+/// Serves the view until Ctrl-C (then throws Interrupted: exit 130). Throws InputError / IoError.
+int run_view(const ViewRequest& request, const Reporter& reporter);
 /// Profiles placement over a sweep; returns the exit code. Throws InputError / IoError.
 int run_profile_placement(const ProfilePlacementRequest& request, const Reporter& reporter);
 

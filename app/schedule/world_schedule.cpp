@@ -112,6 +112,21 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   return stats;
 }
 
+std::shared_ptr<systems::FrameWork> WorldSchedule::render_view(const world::PlannedFrame& frame,
+                                                                systems::CaptureSettings settings) {
+  if (view_camera_.is_null()) {
+    view_camera_ = world_.spawn(world::PlannedFrame(frame));
+  } else {
+    world_.get<world::PlannedFrame>(view_camera_) = frame;
+  }
+  CaptureQueue& queue = world_.resource<CaptureQueue>();
+  queue = CaptureQueue{};
+  queue.cameras.push_back(view_camera_);
+  world_.resource<systems::CaptureSettings>() = std::move(settings);
+  world_.run_phases(Phase::Stream, Phase::Render);
+  return std::move(world_.resource<systems::FrameSlots>().current);
+}
+
 namespace {
 /// `coords` sorted, without repeats.
 std::vector<ChunkCoord> sorted_unique(std::vector<ChunkCoord> coords) {

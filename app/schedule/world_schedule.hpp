@@ -4,6 +4,7 @@
 /// -> Write), and the loops `silva generate`, `silva world` and `silva profile` drive it with.
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ class WorldSchedule {
   systems::CaptureStats capture(const std::vector<world::PlannedFrame>& frames, systems::CaptureSettings settings,
                                 const systems::ProgressFn& progress, const std::function<bool()>& stop);
 
+  /// Runs one schedule frame for `frame` through Stream .. Render (no Write: nothing is written)
+  /// with `settings`, and returns the rendered slot (G-buffer, and the shadow map when rgb is
+  /// selected; RGB not shaded yet: systems::shade_frame). One camera entity serves every call.
+  std::shared_ptr<systems::FrameWork> render_view(const world::PlannedFrame& frame, systems::CaptureSettings settings);
+
   /// Runs one schedule frame with `coords` pinned and no camera, and returns those chunks (moved
   /// out of the chunk cache).
   world::BuiltWorld build(std::vector<ChunkCoord> coords);
@@ -55,6 +61,7 @@ class WorldSchedule {
   void queue_cameras(const std::vector<world::PlannedFrame>& frames);
 
   ecs::World world_;
+  ecs::Entity view_camera_ = ecs::null_entity;  ///< The camera entity render_view reuses.
 };
 
 /// Builds `coords` through the schedule on `threads` TBB threads; timings in the totals.

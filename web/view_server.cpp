@@ -1,0 +1,121 @@
+#include "web/view_server.hpp"
+
+#include <httplib.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace silva::web {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The MIME type of a page file by its extension.
+std::string mime_type(const fs::path& file) {
+  const std::string ext = file.extension().string();
+  if (ext == ".html") return "text/html; charset=utf-8";
+  if (ext == ".js") return "text/javascript; charset=utf-8";
+  return "text/css; charset=utf-8";
+}
+
+/// The whole file, or std::runtime_error naming it.
+std::string read_page_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("the page file " + file.string() + " is missing (set SILVA_DATA to the source folder)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Headers every answer carries: the page loads nothing from elsewhere.
+void set_common_headers(httplib::Response& res) {
+  res.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self' blob: data:");
+  res.set_header("X-Content-Type-Options", "nosniff");
+  res.set_header("Cache-Control", "no-store");
+}
+
+/// Decrements a counter when it goes out of scope.
+struct Release {
+  std::atomic<int>& counter;
+  ~Release() { --counter; }
+};
+
+/// `route` behind the in-flight cap `counter` / `max_in_flight`, translated to httplib.
+httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter, int max_in_flight) {
+  return [route = std::move(route), &counter, max_in_flight](const httplib::Request& req, httplib::Response& res) {
+    set_common_headers(res);
+    if (++counter > max_in_flight) {
+      --counter;
+      res.status = 503;
+      res.set_header("Retry-After", "1");
+      res.set_content("{\"error\":\"busy: request dropped\"}", "application/json");
+      return;
+    }
+    const Release release{counter};
+    Request r;
+    for (const auto& [k, v] : req.params) r.params[k] = v;
+    r.body = req.body;
+    Reply reply;
+    try {
+      reply = route(r);
+    } catch (const std::exception& e) {
+      reply = Reply{500, "text/plain", std::string("internal error: ") + e.what() + "\n", {}};
+    }
+    res.status = reply.status;
+    for (const auto& [k, v] : reply.headers) res.set_header(k.c_str(), v);
+    res.set_content(std::move(reply.body), reply.content_type.c_str());
+  };
+}
+
+}  // namespace
+
+ViewServer::ViewServer(const fs::path& page_dir) : server_(std::make_unique<httplib::Server>()) {
+  server_->new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
+  server_->set_read_timeout(5, 0);
+  server_->set_write_timeout(5, 0);
+  server_->set_payload_max_length(kMaxBodyBytes);
+  for (const char* name : kPageFiles) {
+    const fs::path file = page_dir / name;
+    std::string path = "/";
+    if (std::string_view(name) != "index.html") path.append(name);
+    server_->Get(path, [text = read_page_file(file), type = mime_type(file)](const httplib::Request&,
+                                                                               httplib::Response& res) {
+      set_common_headers(res);
+      res.set_content(text, type.c_str());
+    });
+  }
+  server_->set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    set_common_headers(res);
+    if (res.body.empty()) res.set_content(res.status == 404 ? "not found\n" : "error\n", "text/plain");
+  });
+}
+
+ViewServer::~ViewServer() = default;
+
+std::atomic<int>& ViewServer::new_counter() {
+  in_flight_.push_back(std::make_unique<std::atomic<int>>(0));
+  return *in_flight_.back();
+}
+
+void ViewServer::get(const std::string& path, Route route, int max_in_flight) {
+  server_->Get(path, bounded_handler(std::move(route), new_counter(), max_in_flight));
+}
+
+void ViewServer::post(const std::string& path, Route route, int max_in_flight) {
+  server_->Post(path, bounded_handler(std::move(route), new_counter(), max_in_flight));
+}
+
+int ViewServer::bind(const std::string& host, int port) {
+  const int bound = port == 0 ? server_->bind_to_any_port(host) : (server_->bind_to_port(host, port) ? port : -1);
+  if (bound <= 0) throw std::runtime_error("cannot listen on " + host + ":" + std::to_string(port));
+  return bound;
+}
+
+void ViewServer::run() { server_->listen_after_bind(); }
+
+void ViewServer::stop() { server_->stop(); }
+
+}  // namespace silva::web
