@@ -19,8 +19,8 @@ struct LidarPreset {
   double rotation_hz = 10;             ///< Revolutions per second.
   double min_range = 0.5;              ///< Nearest return (metres).
   double max_range = 100;              ///< Farthest return (metres).
-  double range_noise_m = 0.03;         ///< Standard deviation of the range noise (metres).
-  double dropout = 0.0;                ///< Probability that a return is lost.
+  double range_noise_m = 0.015;        ///< Standard deviation of the range noise (metres).
+  double dropout = 0.005;              ///< Probability that a return is lost.
   double intensity_falloff = 0.005;    ///< Intensity attenuation per metre of range: exp(-falloff * range).
   double intensity_noise = 0.02;       ///< Standard deviation of the additive intensity noise.
 };

@@ -236,7 +236,7 @@ void RayScene::add_group(uint64_t key, std::span<const RayInstance> instances) {
     rtcReleaseGeometry(g);
     impl_->check("instance");
     if (impl_->placed.size() <= id) impl_->placed.resize(id + 1);
-    impl_->placed[id] = Placed{r.mesh, r.object_to_world, r.instance_id, double(r.cutoff), r.anchor.cast<double>(), r.tag};
+    impl_->placed[id] = Placed{r.mesh, r.object_to_world, r.instance_id, r.cutoff, r.anchor.cast<double>(), r.tag};
     ids.push_back(id);
   }
 }

@@ -21,7 +21,7 @@ struct RayInstance {
   uint32_t instance_id = 0;                          ///< Packed instance id (0 = stuff).
   /// The instance is invisible to a cast whose eye lies farther than this from `anchor` (the
   /// renderer's ground-cover cut-off); infinity: always visible.
-  float cutoff = std::numeric_limits<float>::infinity();
+  double cutoff = std::numeric_limits<double>::infinity();
   Vec3f anchor = Vec3f::Zero();                      ///< Point `cutoff` is measured from.
   uint32_t tag = 0;                                  ///< The caller's own number, returned with its hits.
 };
