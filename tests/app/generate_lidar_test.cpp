@@ -18,7 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A noiseless 32-beam preset within the camera's view, 30 m range (a small world is enough).
+/// A noiseless 32-beam preset within the camera's view, 30 m range (a small world is enough), at the
+/// camera's origin, so that both see the same surfaces (a mount offset shows the LiDAR what the
+/// camera cannot see, and hides some of what it sees).
 constexpr const char* kConfig = R"(
 [output]
 resolution = "320x240"
@@ -38,6 +40,7 @@ far = 40
 lod = false
 [lidar]
 preset = "exact"
+mount_offset = [0, 0, 0]
 [lidar.presets.exact]
 channels = 32
 elevation_min_deg = -25
@@ -106,7 +109,7 @@ TEST(GenerateLidar, PointsAgreeWithTheCameraLabelsAndDepth) {
       ASSERT_EQ(semantic.cols, 320);
       points += labels.size();
       for (size_t i = 0; i < labels.size(); ++i) {
-        const Vec4d cam = tr * Vec4d(scan[4 * i], scan[4 * i + 1], scan[4 * i + 2], 1.0);
+        const Eigen::Vector4d cam = tr * Eigen::Vector4d(scan[4 * i], scan[4 * i + 1], scan[4 * i + 2], 1.0);
         if (cam.z() < 0.1) continue;
         const Vec3d uvw = p0 * cam;
         const double u = uvw.x() / uvw.z(), v = uvw.y() / uvw.z();
@@ -127,7 +130,8 @@ TEST(GenerateLidar, PointsAgreeWithTheCameraLabelsAndDepth) {
         const double a = u - x0, b = v - y0;
         const double d00 = depth.at<uint16_t>(y0, x0), d10 = depth.at<uint16_t>(y0, x0 + 1),
                      d01 = depth.at<uint16_t>(y0 + 1, x0), d11 = depth.at<uint16_t>(y0 + 1, x0 + 1);
-        if (std::max({d00, d10, d01, d11}) - std::min({d00, d10, d01, d11}) > 50) continue;  // a depth edge
+        // Interpolation holds to 1 cm only where the depth is smooth: skip 2x2 blocks spanning more.
+        if (std::max({d00, d10, d01, d11}) - std::min({d00, d10, d01, d11}) > 10) continue;
         const double mm = (1 - b) * ((1 - a) * d00 + a * d10) + b * ((1 - a) * d01 + a * d11);
         ++depth_checked;
         depth_agree += std::abs(mm - 1000.0 * cam.z()) <= 10.0;
@@ -139,7 +143,7 @@ TEST(GenerateLidar, PointsAgreeWithTheCameraLabelsAndDepth) {
               double(depth_agree) / double(depth_checked));
   ASSERT_GT(classed, 2000u);
   EXPECT_GE(double(class_agree) / double(classed), 0.99);
-  ASSERT_GT(depth_checked, 1000u);
+  ASSERT_GT(depth_checked, 200u);
   EXPECT_GE(double(depth_agree) / double(depth_checked), 0.99);
 }
 
