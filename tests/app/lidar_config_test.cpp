@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "app/config/data_path.hpp"
 #include "core/error.hpp"
 #include "silva_process.hpp"
