@@ -6,9 +6,9 @@
 
 namespace silva::bench {
 
-/// Traces a view with Embree 3: one BVH per mesh (a geometry per part, an intersection
-/// filter for alpha-masked parts) under a top-level BVH of instances. Build and trace run on TBB
-/// in the caller's task_arena.
+/// Traces a view with Embree 3 through raycast::RayScene (one BVH per mesh, an intersection filter
+/// for alpha-masked parts, a top-level BVH of instances). Build and trace run on TBB in the
+/// caller's task_arena.
 class EmbreePeer {
  public:
   /// Builds the BVHs (the setup, timed into setup_ms()).

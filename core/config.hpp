@@ -97,6 +97,13 @@ struct RenderConfig {
   double ground_cover_distance = 40;  ///< render.ground_cover_distance (m)
 };
 
+/// The LiDAR sensor (`[lidar]`): its model and where it rides on the capture camera.
+struct LidarConfig {
+  std::string preset = "vlp16";                     ///< lidar.preset: a [lidar.presets.<name>]
+  std::vector<double> mount_offset = {0, 0, 0.3};   ///< lidar.mount_offset: metres forward, left, up of the camera
+  std::vector<double> mount_rpy_deg = {0, 0, 0};    ///< lidar.mount_rpy_deg: roll, pitch, yaw from the camera's heading
+};
+
 /// Every config key, resolved (defaults = thesis defaults).
 struct Config {
   int64_t seed = 0;          ///< seed (0..9 999 999 999); drawn from the clock when absent
@@ -109,6 +116,7 @@ struct Config {
   TrailConfig trail;         ///< [trail]
   WorldConfig world;         ///< [world]
   RenderConfig render;       ///< [render]
+  LidarConfig lidar;         ///< [lidar]
 };
 
 }  // namespace silva

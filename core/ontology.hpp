@@ -31,6 +31,8 @@ struct OntologyClass {
   std::array<uint8_t, 3> color{};    ///< RGB colour for semantic_color images.
   std::string rugd;                  ///< RUGD class mapping.
   std::string rellis;                ///< RELLIS-3D class mapping.
+  std::string semantic_kitti;        ///< SemanticKITTI class name ("" = unmapped).
+  uint16_t semantic_kitti_id = 0;    ///< SemanticKITTI raw label id (0 = unlabeled).
 };
 
 /// The ontology: one entry per role, indexed by Role's numeric value.

@@ -25,6 +25,7 @@ enum class Purpose : uint32_t {
   SensorNoise = 40,
   MaterialNoise = 41,
   WeatherOverlay = 42,
+  LidarNoise = 43,
   Test = 1000,
 };
 

@@ -43,6 +43,8 @@ std::vector<EncodedFile> encode_one(OutputType t, const LabelPlanes& g, std::spa
       return png(encode_png_grey8(depth_preview_image(g), w, h));
     case OutputType::Normal:
       return png(encode_png_rgb8(normal_image(g), w, h));
+    case OutputType::Lidar:
+      return {};  // cast and encoded from the sweep, not the G-buffer (systems/cast_lidar.hpp)
   }
   throw std::logic_error("encode_one: unknown output type");
 }

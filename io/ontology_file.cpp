@@ -39,6 +39,10 @@ Ontology parse_ontology(const std::string& text, const std::string& source) {
     }
     c.rugd = json_string(e, "rugd", where);
     c.rellis = json_string(e, "rellis", where);
+    if (e.contains("semantic_kitti")) {
+      c.semantic_kitti = json_string(e, "semantic_kitti", where);
+      c.semantic_kitti_id = uint16_t(json_int(e, "semantic_kitti_id", 0, 65535, where));
+    }
   }
   for (int r = 0; r < kRoleCount; ++r)
     if (!seen[r])
@@ -61,6 +65,10 @@ std::string ontology_json(const Ontology& ontology) {
     e["color"] = {c.color[0], c.color[1], c.color[2]};
     e["rugd"] = c.rugd;
     e["rellis"] = c.rellis;
+    if (!c.semantic_kitti.empty()) {
+      e["semantic_kitti"] = c.semantic_kitti;
+      e["semantic_kitti_id"] = c.semantic_kitti_id;
+    }
     out += "    " + e.dump() + (r + 1 < kRoleCount ? ",\n" : "\n");
   }
   return out + "  ]\n}\n";

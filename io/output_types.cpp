@@ -6,7 +6,7 @@ namespace silva::io {
 
 namespace {
 constexpr const char* kNames[kOutputTypeCount] = {"rgb",   "semantic",  "semantic_color", "instance",
-                                                  "depth", "depth_exr", "depth_preview",  "normal"};
+                                                  "depth", "depth_exr", "depth_preview",  "normal", "lidar"};
 }  // namespace
 
 const char* output_type_name(OutputType t) { return kNames[size_t(t)]; }

@@ -8,13 +8,13 @@
 namespace silva::io {
 
 /// One kind of output image (its name is also its folder name).
-enum class OutputType : uint8_t { Rgb, Semantic, SemanticColor, Instance, Depth, DepthExr, DepthPreview, Normal };
+enum class OutputType : uint8_t { Rgb, Semantic, SemanticColor, Instance, Depth, DepthExr, DepthPreview, Normal, Lidar };
 
 /// Number of output types.
-inline constexpr int kOutputTypeCount = 8;
+inline constexpr int kOutputTypeCount = 9;
 
 /// Name / folder of an output type: "rgb", "semantic", "semantic_color", "instance", "depth",
-/// "depth_exr", "depth_preview", "normal".
+/// "depth_exr", "depth_preview", "normal", "lidar" (a LiDAR sweep per frame: lidar/ and lidar_labels/).
 const char* output_type_name(OutputType t);
 
 /// Which output types a run writes.

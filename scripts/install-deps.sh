@@ -2,7 +2,7 @@
 # Installs exactly the Debian (bookworm) packages Silva's build and tests need; a fast no-op
 # (one dpkg-query call) when every one is already installed. Runs as root, or through sudo.
 # Usage: scripts/install-deps.sh [--bench] [--tidy]
-#   --bench  also what `make bench` needs (Embree and OpenGL/EGL for the comparison renderers,
+#   --bench  also what `make bench` needs (OpenGL/EGL for the llvmpipe comparison renderer,
 #            matplotlib/numpy for the plots)
 #   --tidy   also clang-tidy, for `make tidy`
 # ccache is optional (CMake uses it when present) and git only names the revision; neither is listed.
@@ -15,12 +15,12 @@ PKGS=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libassimp-dev libfcl-dev libtbb-dev libmeshoptimizer-dev libhwy-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinygltf-dev
-  libdeflate-dev libxxhash-dev libssl-dev libcpp-httplib-dev
+  libdeflate-dev libxxhash-dev libssl-dev libcpp-httplib-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   chromium
 )
 BENCH_PKGS=(
-  libembree-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0
+  libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0
   python3-matplotlib python3-numpy
 )
 TIDY_PKGS=(clang-tidy)

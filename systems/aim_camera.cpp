@@ -1,10 +1,13 @@
 #include "systems/aim_camera.hpp"
 
+#include <algorithm>
+
 #include "components/camera.hpp"
 #include "components/chunk.hpp"
 #include "components/phase.hpp"
 #include "components/world_source.hpp"
 #include "render/shadow_plan.hpp"
+#include "systems/render_views.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/plan_captures.hpp"
 #include "world/world_context.hpp"
@@ -19,7 +22,7 @@ void install_aim_camera(ecs::World& world) {
   world.set_resource(ViewChunks{});
   world.system("aim_camera")
       .phase(Phase::Stream)
-      .reads_resource<WorldSource>()
+      .reads_resource<WorldSource, CaptureSettings>()
       .writes_resource<CaptureQueue, ViewChunks>()
       .reads<world::PlannedFrame>()
       .run([](ecs::SystemContext& sys) {
@@ -30,7 +33,10 @@ void install_aim_camera(ecs::World& world) {
         if (queue.active.is_null()) return;
         const double chunk_size = sys.resource<const WorldSource>().ctx->chunk_size();
         const Camera& camera = sys.get<const world::PlannedFrame>(queue.active).camera;
-        view.coords = world::chunks_for_view(camera, chunk_size, kShadowCasterReach);
+        // A LiDAR sees all around: the disc out to its range, when it is selected.
+        const CaptureSettings& settings = sys.resource<const CaptureSettings>();
+        const double lidar_reach = settings.outputs.has(io::OutputType::Lidar) ? settings.lidar.max_range : 0.0;
+        view.coords = world::chunks_for_view(camera, chunk_size, std::max(kShadowCasterReach, lidar_reach));
       });
 }
 

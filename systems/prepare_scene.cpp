@@ -83,14 +83,10 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
   for (const auto& c : chunks) {
     add_world_mesh(c->terrain, &c->terrain_lod, c->terrain_bounds);
     for (const Vegetation& v : c->objects) {
-      render::Instance inst;
-      inst.variation = variation_seed(v.position);
+      const render::Instance inst = object_instance(v);
       if (ground_cover_[v.asset] != 0 &&
           (v.position.cast<double>() - eye).norm() > ground_cover_cutoff(inst.variation, ground_cover_distance))
         continue;
-      inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);
-      inst.mesh = v.asset;
-      inst.instance_id = v.instance_id;
       objects_drawn.push_back(inst);
     }
   }
@@ -98,6 +94,36 @@ FrameScene SceneBuilder::build(std::vector<std::shared_ptr<const ChunkContent>> 
   std::copy(asset_meshes_->begin(), asset_meshes_->end(), scene.meshes.begin());
   scene.instances.insert(scene.instances.end(), objects_drawn.begin(), objects_drawn.end());
   out.chunks = std::move(chunks);
+  return out;
+}
+
+render::Instance SceneBuilder::object_instance(const Vegetation& v) {
+  render::Instance inst;
+  inst.variation = variation_seed(v.position);
+  inst.object_to_world = world::object_to_world(v.position, v.yaw, v.scale);
+  inst.mesh = v.asset;
+  inst.instance_id = v.instance_id;
+  return inst;
+}
+
+std::vector<raycast::RayInstance> SceneBuilder::ray_instances(const ChunkContent& chunk,
+                                                              double ground_cover_distance) const {
+  std::vector<render::Instance> objects;
+  objects.reserve(chunk.objects.size());
+  for (const Vegetation& v : chunk.objects) objects.push_back(object_instance(v));
+  make_drawable(objects, 0);
+  std::vector<raycast::RayInstance> out;
+  out.reserve(objects.size() + 1);
+  out.push_back({&chunk.terrain, Affine3f::Identity(), 0});
+  for (size_t k = 0; k < objects.size(); ++k) {
+    const render::Instance& inst = objects[k];
+    raycast::RayInstance r{(*asset_meshes_)[inst.mesh].lods[0], inst.object_to_world, inst.instance_id};
+    if (ground_cover_[inst.mesh] != 0) {
+      r.cutoff = ground_cover_cutoff(inst.variation, ground_cover_distance);
+      r.anchor = chunk.objects[k].position;
+    }
+    out.push_back(r);
+  }
   return out;
 }
 

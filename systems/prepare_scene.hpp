@@ -6,6 +6,7 @@
 
 #include "assets/library.hpp"
 #include "ecs/world.hpp"
+#include "raycast/ray_scene.hpp"
 #include "render/scene.hpp"
 #include "world/chunk_content.hpp"
 
@@ -29,8 +30,13 @@ class SceneBuilder {
   /// the meshes of assets drawn for the first time (in parallel); copies of the builder share them.
   FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
                    double ground_cover_distance) const;
+  /// The same chunk for the ray caster: its terrain and every object at full detail, ground cover
+  /// carrying the cut-off build() applies (measured from each cast's eye). Makes missing meshes.
+  std::vector<raycast::RayInstance> ray_instances(const ChunkContent& chunk, double ground_cover_distance) const;
 
  private:
+  /// The instance of a placed object (its mesh index is its asset).
+  static render::Instance object_instance(const Vegetation& v);
   /// Fills the drawable meshes of the assets instances[first..] draw that have none yet.
   void make_drawable(const std::vector<render::Instance>& instances, size_t first) const;
 

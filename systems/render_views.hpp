@@ -8,10 +8,12 @@
 #include <mutex>
 #include <vector>
 
+#include "core/lidar_point.hpp"
 #include "core/ontology.hpp"
 #include "ecs/world.hpp"
 #include "io/capture_set.hpp"
 #include "io/output_types.hpp"
+#include "raycast/lidar.hpp"
 #include "render/gbuffer.hpp"
 #include "render/lighting.hpp"
 #include "render/renderer.hpp"
@@ -25,6 +27,7 @@ struct CaptureSettings {
   Ontology ontology;                 ///< Class ids and colours.
   io::OutputSelection outputs;       ///< Output types to write.
   std::filesystem::path run_dir;     ///< <output.dir>/<seed>/.
+  raycast::LidarPreset lidar;        ///< The LiDAR model of output type lidar.
 };
 
 /// One frame travelling from Render through Write; its buffers are reused across frames.
@@ -39,6 +42,8 @@ struct FrameWork {
   uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
   std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class (role) in the view.
   uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
+  std::vector<LidarPoint> lidar;     ///< The frame's LiDAR sweep (empty when lidar is not selected).
+  double lidar_s = 0;                ///< Wall time of the sweep (scene update and cast).
 };
 
 /// Resource: the renderer, the frame slots (recycled, so each in-flight frame's big buffers are

@@ -12,6 +12,7 @@
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
 #include "io/label_planes.hpp"
+#include "io/lidar_files.hpp"
 #include "render/edge_aa.hpp"
 #include "render/shade.hpp"
 #include "systems/render_views.hpp"
@@ -58,6 +59,13 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
   const Stopwatch clock;
   work.files = io::encode_capture_set(label_planes(work.gbuffer), work.rgb, settings.ontology, settings.outputs, f.frame);
+  if (settings.outputs.has(io::OutputType::Lidar)) {
+    io::LidarLabels labels = io::semantic_kitti_labels(work.lidar, settings.ontology);
+    work.files.push_back({io::frame_file("lidar", f.frame, "bin"), io::kitti_scan(work.lidar)});
+    work.files.push_back({io::frame_file("lidar_labels", f.frame, "label"), std::move(labels.labels)});
+    work.files.push_back({io::frame_file("lidar_labels", f.frame, "json"),
+                          std::vector<uint8_t>(labels.instances_json.begin(), labels.instances_json.end())});
+  }
   work.encode_s = clock.seconds();
 }
 
@@ -78,6 +86,8 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   stats.shadow_s += work.shadow_s;
   stats.shade_s += work.shade_s;
   stats.encode_s += work.encode_s;
+  stats.lidar_s += work.lidar_s;
+  stats.lidar_points += work.lidar.size();
   stats.triangles_submitted += work.triangles_submitted;
   stats.triangles_rasterised += work.triangles_rasterised;
   for (int r = 0; r < kRoleCount; ++r) stats.pixels_by_role[size_t(r)] += work.pixels_by_role[size_t(r)];
@@ -117,6 +127,7 @@ void create_output_folders(const fs::path& run_dir, const std::vector<world::Pla
     std::vector<std::string> names = {"camera"};
     for (int t = 0; t < io::kOutputTypeCount; ++t)
       if (outputs.has(io::OutputType(t))) names.push_back(io::output_type_name(io::OutputType(t)));
+    if (outputs.has(io::OutputType::Lidar)) names.push_back("lidar_labels");
     for (const auto& n : names) {
       std::error_code ec;
       fs::create_directories(seq / n, ec);

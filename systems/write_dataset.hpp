@@ -36,6 +36,8 @@ struct CaptureStats {
   double shade_s = 0;    ///< RGB shading.
   double encode_s = 0;   ///< Encoding all outputs.
   double write_s = 0;    ///< Writing files.
+  double lidar_s = 0;    ///< LiDAR scene updates and sweeps.
+  uint64_t lidar_points = 0;  ///< LiDAR returns written.
   double wall_s = 0;     ///< Whole run, wall clock.
 };
 

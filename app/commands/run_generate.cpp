@@ -1,5 +1,6 @@
 // `silva generate` after the CLI checks: plan, prepare the run folder, capture, write manifests.
 #include <filesystem>
+#include <map>
 
 #include "app/cli/interrupt.hpp"
 #include "app/cli/progress.hpp"
@@ -9,10 +10,12 @@
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
+#include "io/lidar_files.hpp"
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
 #include "app/schedule/world_schedule.hpp"
+#include "systems/cast_lidar.hpp"
 
 namespace silva::app {
 
@@ -52,6 +55,22 @@ std::vector<world::PlannedFrame> frames_to_capture(const std::vector<world::Plan
     frames.push_back(f);
   }
   return frames;
+}
+
+/// With output type lidar: each sequence's KITTI calib.txt and poses.txt (every planned frame, in
+/// frame order), written before its frames.
+void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, const fs::path& run_dir,
+                                const Config& cfg) {
+  std::map<std::string, std::map<int, const world::PlannedFrame*>> sequences;
+  for (const world::PlannedFrame& f : plan) sequences[f.sequence][f.frame] = &f;
+  for (const auto& [name, frames] : sequences) {
+    std::vector<Mat4d> poses;
+    for (const auto& [n, f] : frames) poses.push_back(f->camera.camera_to_world);
+    fs::create_directories(run_dir / name);
+    io::write_file_atomic(run_dir / name / "poses.txt", io::kitti_poses(poses));
+    io::write_file_atomic(run_dir / name / "calib.txt",
+                          io::kitti_calib(frames.begin()->second->camera, systems::lidar_to_camera(cfg.lidar)));
+  }
 }
 
 /// Prints the run's summary: a JSON object with --json, else one line.
@@ -104,6 +123,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   if (!loaded.seed_from_clock)
     reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
+  if (outputs.has(io::OutputType::Lidar)) write_lidar_sequence_files(plan, run_dir, cfg);
 
   int skipped = 0;
   const std::vector<world::PlannedFrame> frames = frames_to_capture(plan, request, run_dir, skipped);
@@ -113,7 +133,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
 
   Progress progress(reporter, int(frames.size()), "frames");
   const systems::CaptureStats stats =
-      schedule.capture(frames, {setup.preset, setup.ontology, outputs, run_dir},
+      schedule.capture(frames, {setup.preset, setup.ontology, outputs, run_dir, setup.lidar},
                        [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
   progress.finish();
 

@@ -8,6 +8,7 @@
 #include "app/cli/version.hpp"
 #include "app/config/config_print.hpp"
 #include "io/sha256.hpp"
+#include "systems/cast_lidar.hpp"
 
 namespace silva::app {
 
@@ -23,7 +24,7 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   config["output"].erase("dir");
   nlohmann::json frames = nlohmann::json::object();
   for (const auto& [sequence, n] : frames_per_sequence) frames[sequence] = n;
-  return {
+  nlohmann::json manifest = {
       {"silva_version", silva_version()},
       {"seed", loaded.config.seed},
       {"config", config},
@@ -33,6 +34,30 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
         {"asset_library", io::sha256_file(setup.library_json)}}},
       {"frames", frames},
   };
+  if (io::OutputSelection::from_names(loaded.config.output.types).has(io::OutputType::Lidar))
+    manifest["sensors"]["lidar"] = lidar_description(loaded, setup);
+  return manifest;
+}
+
+nlohmann::json lidar_description(const LoadedConfig& loaded, const RunSetup& setup) {
+  const raycast::LidarPreset& p = setup.lidar;
+  const Mat4d m = systems::lidar_to_camera(loaded.config.lidar);
+  nlohmann::json rows = nlohmann::json::array();
+  for (int r = 0; r < 4; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2), m(r, 3)});
+  return {{"preset", p.name},
+          {"channels", p.elevations_deg.size()},
+          {"elevations_deg", p.elevations_deg},
+          {"columns", p.columns},
+          {"rotation_hz", p.rotation_hz},
+          {"min_range", p.min_range},
+          {"max_range", p.max_range},
+          {"range_noise_m", p.range_noise_m},
+          {"dropout", p.dropout},
+          {"intensity_falloff", p.intensity_falloff},
+          {"intensity_noise", p.intensity_noise},
+          {"frame", "x forward, y left, z up"},
+          {"lidar_to_camera", rows},
+          {"presets_sha256", io::sha256_file(setup.lidar_toml)}};
 }
 
 namespace {
@@ -87,6 +112,7 @@ nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int 
         {"shade", s.shade_s},
         {"encode", s.encode_s},
         {"write", s.write_s},
+        {"lidar", s.lidar_s},
         {"wall", s.wall_s}}},
   };
 }

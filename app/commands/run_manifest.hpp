@@ -11,9 +11,13 @@
 namespace silva::app {
 
 /// The manifest: Silva version, resolved config without output.dir, sha256 of the lighting,
-/// ontology and asset-library files, seed, frame counts per sequence.
+/// ontology and asset-library files, seed, frame counts per sequence, and with output type lidar
+/// the sensor ("sensors": {"lidar": lidar_description}).
 nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
                              const std::map<std::string, int>& frames_per_sequence);
+
+/// The LiDAR of the manifest's "sensors": its preset's numbers, axes, mount and presets file sha256.
+nlohmann::json lidar_description(const LoadedConfig& loaded, const RunSetup& setup);
 
 /// Frames per sequence of a plan.
 std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& frames);

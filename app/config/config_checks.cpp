@@ -92,6 +92,10 @@ void check_config(const LoadedConfig& loaded) {
     throw InputError(where + ": captures.autopilot_points x len(captures.autopilot_yaws) = " +
                      std::to_string(autopilot_frames) + " frames, allowed at most 1000000");
   }
+  for (const auto& [key, values] : {std::pair<const char*, const std::vector<double>*>{"lidar.mount_offset", &c.lidar.mount_offset},
+                                    {"lidar.mount_rpy_deg", &c.lidar.mount_rpy_deg}})
+    if (values->size() != 3)
+      throw InputError(where + ": " + key + " must list 3 numbers, got " + std::to_string(values->size()));
   const std::vector<std::string> presets = lighting_preset_names(loaded);
   if (!contains(presets, c.lighting.time_of_day)) {
     std::string allowed;

@@ -10,6 +10,7 @@
 #include "app/config/config_checks.hpp"
 #include "app/config/config_schema.hpp"
 #include "app/config/config_value.hpp"
+#include "app/config/lidar_config.hpp"
 #include "app/config/lighting_config.hpp"
 #include "core/error.hpp"
 
@@ -19,6 +20,7 @@ namespace {
 
 constexpr std::string_view kPresetsTable = "lighting.presets";
 constexpr std::string_view kWeathersTable = "lighting.weather_presets";
+constexpr std::string_view kLidarTable = "lidar.presets";
 
 /// "file:line:column" of a node parsed from a file.
 std::string node_location(const std::string& source, const toml::node& node) {
@@ -67,6 +69,11 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       }
       parse_weather_tables(*node.as_table(), loaded.source);
       loaded.weather_presets = *node.as_table();
+    } else if (name == kLidarTable) {
+      if (!node.is_table())
+        throw InputError(where + ": lidar.presets must hold tables [lidar.presets.<name>], got " + describe_node(node));
+      parse_lidar_presets(*node.as_table(), loaded.source, {}, false);  // checks every key where its source is known
+      loaded.lidar_presets = *node.as_table();
     } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {

@@ -119,6 +119,10 @@ std::string config_to_toml(const LoadedConfig& loaded) {
     out << "\n[lighting.weather_presets." << toml_key(name.str()) << "]\n";
     if (const auto* table = weather.as_table()) print_table_entries(out, *table, "");
   }
+  for (const auto& [name, preset] : loaded.lidar_presets) {
+    out << "\n[lidar.presets." << toml_key(name.str()) << "]\n";
+    if (const auto* table = preset.as_table()) print_table_entries(out, *table, "");
+  }
   return out.str();
 }
 
@@ -138,6 +142,11 @@ nlohmann::json config_to_json(const LoadedConfig& loaded) {
     std::ostringstream weathers;
     weathers << toml::json_formatter{loaded.weather_presets};
     out["lighting"]["weather_presets"] = nlohmann::json::parse(weathers.str());
+  }
+  if (!loaded.lidar_presets.empty()) {
+    std::ostringstream presets;
+    presets << toml::json_formatter{loaded.lidar_presets};
+    out["lidar"]["presets"] = nlohmann::json::parse(presets.str());
   }
   return out;
 }

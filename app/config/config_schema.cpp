@@ -19,7 +19,7 @@ NumericRange above(double min, double max = kInf) { return {min, max, true}; }
 std::vector<ConfigKey> build_schema() {
   const std::vector<std::string_view> output_types = {
       "rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr", "normal",
-      "depth_preview"};
+      "depth_preview", "lidar"};
   const std::vector<std::string_view> sequences = {"autopilot", "random", "custom"};
   using T = ValueType;
   return {
@@ -144,6 +144,15 @@ std::vector<ConfigKey> build_schema() {
        "grass and ferns farther from the camera are not drawn (ground shows, labels follow), in every "
        "LOD mode, metres",
        above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.render.ground_cover_distance; }},
+      {"lidar.preset", T::String,
+       "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
+       "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},
+      {"lidar.mount_offset", T::FloatList,
+       "LiDAR origin relative to the capture camera, metres [forward, left, up] (the camera's heading)",
+       between(-100, 100), {}, [](Config& c) -> FieldRef { return &c.lidar.mount_offset; }},
+      {"lidar.mount_rpy_deg", T::FloatList,
+       "LiDAR rotation relative to the camera's heading, degrees [roll, pitch, yaw]", between(-360, 360), {},
+       [](Config& c) -> FieldRef { return &c.lidar.mount_rpy_deg; }},
   };
 }
 

@@ -19,6 +19,8 @@ struct LoadedConfig {
                                  ///< (already checked by parse_preset_tables).
   toml::table weather_presets;   ///< The config's [lighting.weather_presets.<name>] tables, as written
                                  ///< (already checked by parse_weather_tables).
+  toml::table lidar_presets;     ///< The config's [lidar.presets.<name>] tables, as written
+                                 ///< (already checked by parse_lidar_presets).
 };
 
 }  // namespace silva::app

@@ -7,6 +7,7 @@
 
 #include "app/config/config_print.hpp"
 #include "app/config/data_path.hpp"
+#include "app/config/lidar_config.hpp"
 #include "app/config/lighting_config.hpp"
 #include "assets/load_library.hpp"
 #include "core/error.hpp"
@@ -77,6 +78,8 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   setup.library_json = asset_library_path();
   setup.ontology = io::load_ontology(setup.ontology_json);
   setup.preset = selected_preset(loaded, setup.lighting_toml);
+  setup.lidar_toml = data_path("configs/lidar.toml");
+  setup.lidar = selected_lidar_preset(loaded, setup.lidar_toml);
   Season season = Season::Summer;
   parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
   setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));

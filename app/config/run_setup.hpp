@@ -8,6 +8,7 @@
 #include "app/config/config_loader.hpp"
 #include "assets/library.hpp"
 #include "core/ontology.hpp"
+#include "raycast/lidar.hpp"
 #include "render/lighting.hpp"
 #include "world/world_context.hpp"
 
@@ -22,6 +23,8 @@ struct RunSetup {
   std::filesystem::path library_json;             ///< The asset library manifest used.
   std::filesystem::path lighting_toml;            ///< The lighting presets file used.
   std::filesystem::path ontology_json;            ///< The ontology file used.
+  raycast::LidarPreset lidar;                     ///< The LiDAR preset lidar.preset names.
+  std::filesystem::path lidar_toml;               ///< The LiDAR presets file used.
 };
 
 /// The asset library manifest: $SILVA_ASSETS/library.json when set, else the one built with

@@ -14,6 +14,7 @@
 #include "components/world_source.hpp"
 #include "core/stopwatch.hpp"
 #include "systems/aim_camera.hpp"
+#include "systems/cast_lidar.hpp"
 #include "systems/generate_terrain.hpp"
 #include "systems/place_vegetation.hpp"
 #include "systems/plan_captures.hpp"
@@ -39,6 +40,7 @@ WorldSchedule::WorldSchedule(const world::WorldContext& ctx, std::size_t cache_c
   systems::install_store_chunks(world_);
   systems::install_prepare_scene(world_, *ctx.library);
   systems::install_render_views(world_, {});
+  systems::install_cast_lidar(world_, *ctx.library);
   systems::install_write_dataset(world_);
   world_.build_schedule();
 }

@@ -23,10 +23,11 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
-        "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance"}) {
+        "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance", "lidar.preset",
+        "lidar.mount_offset", "lidar.mount_rpy_deg"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 53u);
+  EXPECT_EQ(names.size(), 56u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

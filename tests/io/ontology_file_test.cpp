@@ -18,6 +18,8 @@ void expect_equal(const Ontology& a, const Ontology& b) {
     EXPECT_EQ(x.color, y.color) << x.role;
     EXPECT_EQ(x.rugd, y.rugd) << x.role;
     EXPECT_EQ(x.rellis, y.rellis) << x.role;
+    EXPECT_EQ(x.semantic_kitti, y.semantic_kitti) << x.role;
+    EXPECT_EQ(x.semantic_kitti_id, y.semantic_kitti_id) << x.role;
   }
 }
 

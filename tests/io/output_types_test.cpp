@@ -11,7 +11,7 @@ TEST(OutputTypes, NamesRoundTrip) {
   std::vector<std::string> names;
   for (int t = 0; t < kOutputTypeCount; ++t) names.push_back(output_type_name(OutputType(t)));
   EXPECT_EQ(names, (std::vector<std::string>{"rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr",
-                                             "depth_preview", "normal"}));
+                                             "depth_preview", "normal", "lidar"}));
   const OutputSelection s = OutputSelection::from_names(names);
   for (int t = 0; t < kOutputTypeCount; ++t) EXPECT_TRUE(s.has(OutputType(t)));
 }

@@ -1,0 +1,35 @@
+#pragma once
+/// @file LiDAR files in the KITTI / SemanticKITTI layouts (CONTRACT.md "LiDAR"): scans, labels with
+/// their instance table, and a sequence's calib.txt and poses.txt.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/lidar_point.hpp"
+#include "core/ontology.hpp"
+
+namespace silva::io {
+
+/// A KITTI velodyne scan: per point float32 x, y, z, intensity, little-endian, no header.
+std::vector<uint8_t> kitti_scan(std::span<const LidarPoint> points);
+
+/// A scan's SemanticKITTI labels and the table of the instances they number.
+struct LidarLabels {
+  std::vector<uint8_t> labels;  ///< Per point uint32 little-endian: class id | instance << 16.
+  std::string instances_json;   ///< {"instances": [{index, instance_id, class_id}]}, as the instance images.
+};
+
+/// Labels of `points`: the low 16 bits hold the ontology's class id of the point's role, the high 16
+/// bits the scan's instance number: 1, 2, ... for the packed instance ids seen, in ascending order (0 = none).
+LidarLabels semantic_kitti_labels(std::span<const LidarPoint> points, const Ontology& ontology);
+
+/// A KITTI calib.txt: P0..P3 (all four the capture camera's 3x4 projection K [I | 0], its pixel
+/// centres at integer coordinates) and Tr (the LiDAR frame to the camera frame, 3x4).
+std::string kitti_calib(const Camera& camera, const Mat4d& sensor_to_camera);
+
+/// A KITTI poses.txt: one line per pose, the 3x4 row-major transform of camera i to camera 0's frame.
+std::string kitti_poses(std::span<const Mat4d> camera_to_world);
+
+}  // namespace silva::io

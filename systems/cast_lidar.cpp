@@ -1,0 +1,85 @@
+#include "systems/cast_lidar.hpp"
+
+#include <cmath>
+#include <set>
+
+#include "components/camera.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "core/stopwatch.hpp"
+#include "raycast/lidar.hpp"
+#include "render/post.hpp"
+#include "systems/render_views.hpp"
+#include "world/world_context.hpp"
+
+namespace silva::systems {
+
+size_t ChunkRayScene::sync(const std::vector<std::shared_ptr<const ChunkContent>>& wanted, const SceneBuilder& builder,
+                           double ground_cover_distance) {
+  std::set<uint64_t> keep;
+  for (const auto& c : wanted) keep.insert(c->coord.key());
+  for (auto it = chunks.begin(); it != chunks.end();) {
+    if (keep.count(it->first)) {
+      ++it;
+      continue;
+    }
+    scene->remove_group(it->first);
+    it = chunks.erase(it);
+  }
+  size_t added = 0;
+  for (const auto& c : wanted) {
+    std::shared_ptr<const ChunkContent>& held = chunks[c->coord.key()];
+    if (held == c) continue;
+    scene->add_group(c->coord.key(), builder.ray_instances(*c, ground_cover_distance));
+    held = c;
+    ++added;
+  }
+  scene->commit();
+  return added;
+}
+
+Mat4d lidar_to_camera(const LidarConfig& mount) {
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  Mat3d flu_to_cv;  // columns: forward, left, up in OpenCV camera axes
+  flu_to_cv << 0, -1, 0, 0, 0, -1, 1, 0, 0;
+  const Mat3d rpy = (Eigen::AngleAxisd(mount.mount_rpy_deg[2] * kDeg, Vec3d::UnitZ()) *
+                     Eigen::AngleAxisd(mount.mount_rpy_deg[1] * kDeg, Vec3d::UnitY()) *
+                     Eigen::AngleAxisd(mount.mount_rpy_deg[0] * kDeg, Vec3d::UnitX()))
+                        .toRotationMatrix();
+  Mat4d m = Mat4d::Identity();
+  m.block<3, 3>(0, 0) = flu_to_cv * rpy;
+  m.block<3, 1>(0, 3) = flu_to_cv * Vec3d(mount.mount_offset[0], mount.mount_offset[1], mount.mount_offset[2]);
+  return m;
+}
+
+void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) {
+  world.set_resource(ChunkRayScene{});
+  world.system("cast_lidar")
+      .phase(Phase::Render)
+      .after("render_views")
+      .reads_resource<WorldSource, CaptureSettings, PreparedScene>()
+      .writes_resource<FrameSlots, ChunkRayScene>()
+      .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
+        FrameSlots& slots = sys.resource<FrameSlots>();
+        const CaptureSettings& settings = sys.resource<const CaptureSettings>();
+        if (!slots.current || !settings.outputs.has(io::OutputType::Lidar)) return;
+        const Stopwatch clock;
+        FrameWork& work = *slots.current;
+        const Config& config = sys.resource<const WorldSource>().ctx->config;
+        ChunkRayScene& rays = sys.resource<ChunkRayScene>();
+        rays.sync(sys.resource<const PreparedScene>().frame.chunks, builder, config.render.ground_cover_distance);
+        const Camera& camera = work.frame.camera;
+        const Mat4d sensor = camera.camera_to_world * lidar_to_camera(config.lidar);
+        raycast::SweepPose pose;
+        pose.sensor_to_world = sensor.block<3, 3>(0, 0);
+        pose.position = sensor.block<3, 1>(0, 3);
+        pose.seed = uint64_t(config.seed);
+        pose.key = render::noise_key(work.frame.sequence, uint64_t(work.frame.frame));
+        raycast::CastOptions options;
+        options.eye = camera.position();
+        work.lidar = raycast::cast_sweep(*rays.scene, settings.lidar, pose, options);
+        work.lidar_s = clock.seconds();
+      });
+}
+
+}  // namespace silva::systems

@@ -1,0 +1,38 @@
+#pragma once
+/// @file Render phase: the active camera's LiDAR sweep through the ray-cast scene of its chunks
+/// (system "cast_lidar"), and the scene kept up to date as chunks stream.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "assets/library.hpp"
+#include "core/config.hpp"
+#include "ecs/world.hpp"
+#include "raycast/ray_scene.hpp"
+#include "systems/prepare_scene.hpp"
+
+namespace silva::systems {
+
+/// The ray-cast scene of the chunks around the active camera: one group per chunk, added when a
+/// view first needs the chunk and removed when a view no longer does.
+struct ChunkRayScene {
+  std::unique_ptr<raycast::RayScene> scene = std::make_unique<raycast::RayScene>();  ///< The BVHs.
+  std::map<uint64_t, std::shared_ptr<const ChunkContent>> chunks;  ///< Chunks in the scene (keeps their meshes alive).
+  /// Makes the scene hold exactly `chunks` (a chunk whose content changed is replaced) and commits it;
+  /// returns how many groups it added.
+  size_t sync(const std::vector<std::shared_ptr<const ChunkContent>>& chunks, const SceneBuilder& builder,
+              double ground_cover_distance);
+};
+
+/// The LiDAR frame in the camera's OpenCV axes (x right, y down, z forward): [lidar] mount offset
+/// and roll, pitch, yaw, given along the camera's heading (x forward, y left, z up).
+Mat4d lidar_to_camera(const LidarConfig& mount);
+
+/// Registers "cast_lidar" (phase Render, after render_views) and its ChunkRayScene resource: when a
+/// camera is active and output type lidar is selected, brings the scene up to the PreparedScene's
+/// chunks and casts the sweep of CaptureSettings::lidar from the camera's pose times
+/// lidar_to_camera into FrameSlots::current.
+void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library);
+
+}  // namespace silva::systems

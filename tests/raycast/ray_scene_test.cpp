@@ -1,0 +1,156 @@
+// Known answers for the ray-cast scene: planes, boxes, alpha cards, cut-offs, groups, thread counts.
+#include "raycast/ray_scene.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <vector>
+
+#include "core/rng.hpp"
+#include "tests/raycast/test_meshes.hpp"
+
+namespace silva::raycast {
+namespace {
+
+using test::alpha_card;
+using test::box;
+using test::placed;
+using test::square;
+
+/// A ray from `o` along `d`.
+Ray ray(const Vec3d& o, const Vec3d& d) {
+  Ray r;
+  r.origin = o;
+  r.direction = d;
+  return r;
+}
+
+TEST(RayScene, EmptySceneMissesEverything) {
+  RayScene scene;
+  scene.commit();
+  EXPECT_FALSE(scene.cast(ray({0, 0, 5}, {0, 0, -1})).hit);
+}
+
+TEST(RayScene, PlaneAndScaledBoxGiveAnalyticHits) {
+  const Mesh plane = square(100.0f), cube = box(0.5f);
+  RayScene scene;
+  const RayInstance instances[] = {{&plane, placed({0, 0, -1}), 0}, {&cube, placed({10, 0, 1}, 2.0f), 42}};
+  scene.add_group(7, instances);
+  scene.commit();
+  const RayHit down = scene.cast(ray({3, 4, 5}, {0, 0, -1}));
+  ASSERT_TRUE(down.hit);
+  EXPECT_FLOAT_EQ(down.t, 6.0f);
+  EXPECT_EQ(down.role, Role::Ground);
+  EXPECT_EQ(down.instance_id, 0u);
+  EXPECT_NEAR(down.position.z(), -1.0f, 1e-5f);
+  EXPECT_NEAR(down.normal.z(), 1.0f, 1e-6f);
+  // The box is scaled 2x: its face x = 10 - 1 = 9 is hit at t = 9 from the origin.
+  const RayHit side = scene.cast(ray({0, 0, 1}, {1, 0, 0}));
+  ASSERT_TRUE(side.hit);
+  EXPECT_NEAR(side.t, 9.0f, 1e-5f);
+  EXPECT_EQ(side.role, Role::Obstacle);
+  EXPECT_EQ(side.instance_id, 42u);
+  EXPECT_NEAR(side.geometric_normal.x(), -1.0f, 1e-6f);
+  // A direction of length 2 halves t.
+  EXPECT_NEAR(scene.cast(ray({0, 0, 1}, {2, 0, 0})).t, 4.5f, 1e-5f);
+  // t_far before the surface: a miss.
+  Ray shortr = ray({0, 0, 1}, {1, 0, 0});
+  shortr.t_far = 8.5;
+  EXPECT_FALSE(scene.cast(shortr).hit);
+}
+
+TEST(RayScene, AlphaCardLetsRaysThroughTransparentTexels) {
+  const Mesh plane = square(100.0f), card = alpha_card(2.0f);
+  RayScene scene;
+  const RayInstance instances[] = {{&plane, placed({0, 0, 0}), 0}, {&card, placed({0, 0, 1}), 5}};
+  scene.add_group(1, instances);
+  scene.commit();
+  // u < 0.5 is y < 0 on the card: opaque. The ray goes down at 45 degrees through x = 0.
+  const RayHit opaque = scene.cast(ray({-1, -0.5, 2}, {1, 0, -1}));
+  ASSERT_TRUE(opaque.hit);
+  EXPECT_EQ(opaque.role, Role::TreeCanopy);
+  EXPECT_NEAR(opaque.t, 1.0f, 1e-5f);
+  const RayHit through = scene.cast(ray({-1, 0.5, 2}, {1, 0, -1}));
+  ASSERT_TRUE(through.hit);
+  EXPECT_EQ(through.role, Role::Ground);
+  EXPECT_NEAR(through.t, 2.0f, 1e-5f);
+}
+
+TEST(RayScene, CutoffHidesInstancesFromFarEyes) {
+  const Mesh plane = square(100.0f), cube = box(0.5f);
+  RayScene scene;
+  RayInstance grass{&cube, placed({0, 0, 0.5f}), 0};
+  grass.cutoff = 10.0f;
+  grass.anchor = Vec3f(0, 0, 0.5f);
+  const RayInstance instances[] = {{&plane, placed({0, 0, 0}), 0}, grass};
+  scene.add_group(1, instances);
+  scene.commit();
+  CastOptions near_eye, far_eye;
+  near_eye.eye = Vec3d(5, 0, 0);
+  far_eye.eye = Vec3d(20, 0, 0);
+  EXPECT_NEAR(scene.cast(ray({0, 0, 5}, {0, 0, -1}), near_eye).t, 4.0f, 1e-5f);
+  EXPECT_NEAR(scene.cast(ray({0, 0, 5}, {0, 0, -1}), far_eye).t, 5.0f, 1e-5f);
+}
+
+TEST(RayScene, GroupsComeAndGoAndReleaseTheirMeshes) {
+  const Mesh plane = square(10.0f), cube = box(0.5f);
+  RayScene scene;
+  const RayInstance a[] = {{&plane, placed({0, 0, 0}), 0}};
+  const RayInstance b[] = {{&cube, placed({0, 0, 3}), 9}, {&plane, placed({20, 0, 0}), 0}};
+  scene.add_group(1, a);
+  scene.add_group(2, b);
+  scene.commit();
+  EXPECT_EQ(scene.instance_count(), 3u);
+  EXPECT_EQ(scene.mesh_count(), 2u);
+  EXPECT_EQ(scene.group_keys(), (std::vector<uint64_t>{1, 2}));
+  EXPECT_EQ(scene.cast(ray({0, 0, 10}, {0, 0, -1})).instance_id, 9u);
+  scene.remove_group(2);
+  scene.commit();
+  EXPECT_FALSE(scene.has_group(2));
+  EXPECT_EQ(scene.mesh_count(), 1u);
+  const RayHit h = scene.cast(ray({0, 0, 10}, {0, 0, -1}));
+  ASSERT_TRUE(h.hit);
+  EXPECT_EQ(h.instance_id, 0u);
+  EXPECT_FALSE(scene.cast(ray({20, 0, 10}, {0, 0, -1})).hit);
+  scene.add_group(2, b);
+  scene.commit();
+  EXPECT_TRUE(scene.cast(ray({20, 0, 10}, {0, 0, -1})).hit);
+}
+
+TEST(RayScene, HitsAreTheSameForAnyThreadCount) {
+  const Mesh plane = square(200.0f), cube = box(0.5f), card = alpha_card(1.0f);
+  std::vector<RayInstance> instances = {{&plane, placed({0, 0, 0}), 0}};
+  Rng rng(1, 1, Purpose::Test);
+  for (uint32_t i = 0; i < 400; ++i) {
+    const Vec3f at(rng.range(-50, 50), rng.range(-50, 50), 0.5f);
+    instances.push_back({i % 2 ? &cube : &card, placed(at, 1.0f + float(i % 3)), i + 1});
+  }
+  std::vector<Ray> rays;
+  for (uint32_t i = 0; i < 5000; ++i) {
+    const double dx = rng.uniform_double() - 0.5, dy = rng.uniform_double() - 0.5;
+    rays.push_back(ray({0, 0, 1.5}, {dx, dy, -0.05}));
+  }
+  auto run = [&](int threads) {
+    std::vector<RayHit> hits(rays.size());
+    tbb::task_arena(threads).execute([&] {
+      RayScene scene;
+      scene.add_group(0, instances);
+      scene.commit();
+      scene.cast(rays, hits);
+    });
+    return hits;
+  };
+  const std::vector<RayHit> one = run(1), two = run(2);
+  size_t hits = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    ASSERT_EQ(one[i].hit, two[i].hit) << i;
+    hits += one[i].hit;
+    EXPECT_EQ(one[i].t, two[i].t) << i;
+    EXPECT_EQ(one[i].instance_id, two[i].instance_id) << i;
+    EXPECT_EQ(one[i].triangle, two[i].triangle) << i;
+  }
+  EXPECT_GT(hits, rays.size() / 2);
+}
+
+}  // namespace
+}  // namespace silva::raycast
