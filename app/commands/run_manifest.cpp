@@ -23,7 +23,7 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   config["output"].erase("dir");
   nlohmann::json frames = nlohmann::json::object();
   for (const auto& [sequence, n] : frames_per_sequence) frames[sequence] = n;
-  return {
+  nlohmann::json manifest = {
       {"silva_version", silva_version()},
       {"seed", loaded.config.seed},
       {"config", config},
@@ -33,6 +33,9 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
         {"asset_library", io::sha256_file(setup.library_json)}}},
       {"frames", frames},
   };
+  if (frames_per_sequence.count("custom"))
+    manifest["sha256"]["poses_file"] = io::sha256_file(loaded.config.captures.poses_file);
+  return manifest;
 }
 
 namespace {

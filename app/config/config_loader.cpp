@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "app/config/config_checks.hpp"
 #include "app/config/config_schema.hpp"
 #include "app/config/config_value.hpp"
 #include "app/config/lighting_config.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::app {
 
@@ -67,29 +65,18 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       }
       parse_weather_tables(*node.as_table(), loaded.source);
       loaded.weather_presets = *node.as_table();
-    } else if (node.is_table()) {
+    } else if (node.is_table() && is_section(name)) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {
       throw InputError(where + ": '" + name + "' must be a table of keys [" + name + "], got " +
                        describe_node(node));
+    } else if (node.is_table()) {
+      throw InputError(where + ": unknown table [" + name + "] (the tables are sections like [" +
+                       std::string(closest_section(name)) + "] and [lighting.presets.<name>])");
     } else {
       unknown_key(where, name);
     }
   }
-}
-
-/// Reads a whole file; throws InputError naming it when it is missing or unreadable.
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError("config file '" + path + "' not found");
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("config file '" + path + "' is a directory, expected a TOML file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) throw InputError("config file '" + path + "' cannot be read");
-  return text.str();
 }
 
 /// A whole decimal integer (leading zeros allowed, as seeds are printed); nullopt otherwise.
@@ -150,11 +137,14 @@ LoadedConfig parse_config_text(std::string_view text, const std::string& source)
 }
 
 LoadedConfig read_config_file(const std::string& path) {
-  return parse_config_text(read_text_file(path), path);
+  return parse_config_text(limits::read_input_file(path, "config file"), path);
 }
 
 void apply_override(LoadedConfig& loaded, std::string_view assignment) {
-  const std::string where = "--set " + std::string(assignment);
+  const std::string where = "--set " + limits::quoted_prefix(assignment);
+  // One key, one value: a line break would let the text add tables of its own.
+  if (assignment.find_first_of("\n\r") != std::string_view::npos)
+    throw InputError(where + ": holds a line break; one --set sets one key to one value");
   const size_t eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(where + ": expected key=value, e.g. --set camera.fov_deg=75");
