@@ -50,12 +50,12 @@ tidy:
 	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_BENCH=OFF >/dev/null
 	bash scripts/tidy.sh build-tidy $(JOBS)
 
-## make fuzz: the libFuzzer harnesses of every input reader (clang-14, ASan + UBSan, tests/fuzz/README.md),
+## make fuzz: the libFuzzer harnesses of every input reader (clang-14, ASan + UBSan, docs/fuzzing.md),
 ## each run FUZZ_SECONDS (default 600) from its seed corpus; a crash leaves its input in build-fuzz/crashes/
 FUZZ_SECONDS ?= 600
 fuzz:
 	@bash scripts/install-deps.sh --fuzz
-	@CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSILVA_FUZZ=ON \
+	@CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DSILVA_FUZZ=ON \
 		-DSILVA_BUILD_TESTS=OFF -DSILVA_BUILD_BENCH=OFF >/dev/null
 	@cmake --build build-fuzz --target fuzz_harnesses -j $(JOBS)
 	bash scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)

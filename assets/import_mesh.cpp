@@ -47,11 +47,14 @@ class AssetImporter {
 
   std::vector<Mesh> run() {
     if (!std::filesystem::is_regular_file(file_)) fail("not found");
-    scene_ = importer_.ReadFile(file_.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                    aiProcess_GenSmoothNormals | aiProcess_FlipUVs |
-                                                    aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    scene_ = importer_.ReadFile(file_.string(), aiProcess_ValidateDataStructure);
     if (scene_ == nullptr || scene_->mRootNode == nullptr || (scene_->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
       fail(std::string("cannot be read: ") + importer_.GetErrorString());
+    // Checked as the file states them: joining identical vertices would merge a NaN into another one.
+    check_file_vertices();
+    scene_ = importer_.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                           aiProcess_GenSmoothNormals | aiProcess_FlipUVs | aiProcess_SortByPType);
+    if (scene_ == nullptr) fail(std::string("cannot be read: ") + importer_.GetErrorString());
     std::vector<const aiNode*> levels;
     for (int k = 0;; ++k) {
       const aiNode* n = scene_->mRootNode->FindNode(("lod" + std::to_string(k)).c_str());
@@ -72,6 +75,29 @@ class AssetImporter {
  private:
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError("asset file " + file_.string() + " (" + where_ + "): " + what);
+  }
+
+  /// Every vertex of the file finite and within limits::kMaxAssetCoordinate of the origin, every
+  /// face index within its mesh.
+  void check_file_vertices() const {
+    const float limit = float(limits::kMaxAssetCoordinate);
+    for (unsigned m = 0; m < scene_->mNumMeshes; ++m) {
+      const aiMesh& am = *scene_->mMeshes[m];
+      const std::string mesh_name = "mesh '" + std::string(am.mName.C_Str()) + "'";
+      for (unsigned v = 0; v < am.mNumVertices; ++v) {
+        const aiVector3D& p = am.mVertices[v];
+        const Vec3f q(p.x, p.y, p.z);
+        if (!q.allFinite() || q.cwiseAbs().maxCoeff() > limit)
+          fail(mesh_name + " vertex " + std::to_string(v) + " is not a finite position within " +
+               std::to_string(int(limit)) + " m of the origin");
+      }
+      for (unsigned f = 0; f < am.mNumFaces; ++f)
+        for (unsigned k = 0; k < am.mFaces[f].mNumIndices; ++k)
+          if (am.mFaces[f].mIndices[k] >= am.mNumVertices)
+            fail(mesh_name + " face " + std::to_string(f) + " has vertex index " +
+                 std::to_string(am.mFaces[f].mIndices[k]) + " (the mesh has " + std::to_string(am.mNumVertices) +
+                 " vertices)");
+    }
   }
 
   static aiMatrix4x4 global_transform(const aiNode& node) {
@@ -109,12 +135,12 @@ class AssetImporter {
     part.double_sided = two_sided != 0;
 
     const uint32_t base = uint32_t(out.positions.size());
-    const std::string mesh_name = "mesh '" + std::string(am.mName.C_Str()) + "'";
     for (unsigned v = 0; v < am.mNumVertices; ++v) {
       const Vec3f p = to_silva(transform * am.mVertices[v]);
-      if (!(p.cwiseAbs().maxCoeff() <= float(limits::kMaxAssetCoordinate)))  // NaN fails too
-        fail(mesh_name + " vertex " + std::to_string(v) + " is not a finite position within " +
-             std::to_string(int(limits::kMaxAssetCoordinate)) + " m of the origin");
+      if (!p.allFinite() || p.cwiseAbs().maxCoeff() > float(limits::kMaxAssetCoordinate))
+        fail("mesh '" + std::string(am.mName.C_Str()) + "' vertex " + std::to_string(v) +
+             " is placed by its node transform outside " + std::to_string(int(limits::kMaxAssetCoordinate)) +
+             " m of the origin (or at no finite position)");
       out.positions.push_back(p);
       aiVector3D n = am.mNormals ? normal_matrix * am.mNormals[v] : aiVector3D(0, 0, 1);
       const Vec3f ns = to_silva(n);
@@ -125,12 +151,7 @@ class AssetImporter {
     for (unsigned f = 0; f < am.mNumFaces; ++f) {
       const aiFace& face = am.mFaces[f];
       if (face.mNumIndices != 3) continue;
-      for (int k = 0; k < 3; ++k) {
-        if (face.mIndices[k] >= am.mNumVertices)
-          fail(mesh_name + " face " + std::to_string(f) + " has vertex index " + std::to_string(face.mIndices[k]) +
-               " (the mesh has " + std::to_string(am.mNumVertices) + " vertices)");
-        out.indices.push_back(base + face.mIndices[k]);
-      }
+      for (int k = 0; k < 3; ++k) out.indices.push_back(base + face.mIndices[k]);
     }
     part.index_count = uint32_t(out.indices.size()) - part.first_index;
     if (part.index_count > 0) out.parts.push_back(std::move(part));

@@ -43,6 +43,17 @@ std::string one_line(std::string_view text) {
                    std::string(closest_key(name)) + "'?)");
 }
 
+/// The dotted name of a table as written: `[foo.bar.baz]` parses as foo holding only bar holding
+/// only baz, so follow single sub-tables down.
+std::string table_path(std::string name, const toml::table& table) {
+  const toml::table* t = &table;
+  while (t->size() == 1 && t->begin()->second.is_table()) {
+    name += "." + std::string(t->begin()->first.str());
+    t = t->begin()->second.as_table();
+  }
+  return name;
+}
+
 /// Walks a parsed table: every leaf must be a schema key; presets are kept aside.
 void read_table(LoadedConfig& loaded, const toml::table& table, const std::string& prefix) {
   for (const auto& [k, node] : table) {
@@ -71,8 +82,9 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       throw InputError(where + ": '" + name + "' must be a table of keys [" + name + "], got " +
                        describe_node(node));
     } else if (node.is_table()) {
-      throw InputError(where + ": unknown table [" + name + "] (the tables are sections like [" +
-                       std::string(closest_section(name)) + "] and [lighting.presets.<name>])");
+      throw InputError(where + ": unknown table [" + table_path(name, *node.as_table()) +
+                       "] (the tables are sections like [" + std::string(closest_section(name)) +
+                       "] and [lighting.presets.<name>])");
     } else {
       unknown_key(where, name);
     }

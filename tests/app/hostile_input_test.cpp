@@ -212,6 +212,7 @@ TEST_F(GenerateErrors, SecondWriterIsRefusedNamingThePid) {
   const fs::path slow = dir_ / "slow";
   std::vector<std::string> a = args({"--set", "captures.random_count=400", "--set", R"(captures.sequences=["random"])"});
   a[4] = slow.string();  // --out
+  fs::create_directories(dir_ / "first");
   const ChildProcess first = start_silva(a, dir_ / "first");
   const fs::path marker = slow / "0000002024" / ".silva-run.json";
   for (int k = 0; k < 600 && !fs::exists(marker); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -229,6 +230,7 @@ TEST_F(GenerateErrors, TerminateWhilePlanningStopsAtOnce) {
   const fs::path planning = dir_ / "planning";
   std::vector<std::string> a = args({"--set", "captures.random_count=1000000", "--set", "world.extent=4096"});
   a[4] = planning.string();  // --out
+  fs::create_directories(dir_ / "child");
   const ChildProcess child = start_silva(a, dir_ / "child");
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   const auto t0 = std::chrono::steady_clock::now();

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
+#include <limits>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -219,9 +221,30 @@ fs::path user_obj_library(const fs::path& root, const std::string& name, const s
   return d / "library.json";
 }
 
+/// A binary glTF of one triangle with the given corner positions and material "granite".
+std::string triangle_glb(const std::array<float, 9>& corners) {
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"materials":[{"name":"granite"}],)"
+      R"("buffers":[{"byteLength":36}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]})";
+  std::string chunk = json + std::string((4 - json.size() % 4) % 4, ' ');
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string bin(reinterpret_cast<const char*>(corners.data()), 36);
+  return u32(0x46546C67) + u32(2) + u32(uint32_t(12 + 8 + chunk.size() + 8 + bin.size())) + u32(uint32_t(chunk.size())) +
+         u32(0x4E4F534A) + chunk + u32(uint32_t(bin.size())) + u32(0x004E4942) + bin;
+}
+
 TEST_F(LoadLibraryTest, CorruptUserAssetsNameFileAndField) {
   const std::string tri = "usemtl granite\nf 1 2 3\n";
-  expect_error(user_obj_library(*dir_, "nan", "v 0 0 0\nv 1 0 0\nv nan 1 0\n" + tri), {"a.obj", "vertex 2", "finite"});
+  const fs::path nan_dir = *dir_ / "nan";
+  fs::create_directories(nan_dir);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::ofstream(nan_dir / "a.glb", std::ios::binary) << triangle_glb({0, 0, 0, 1, 0, 0, nan, 1, 0});
+  std::ofstream(nan_dir / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.glb", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  expect_error(nan_dir / "library.json", {"a.glb", "vertex 2", "finite"});
   expect_error(user_obj_library(*dir_, "far", "v 0 0 0\nv 1 0 0\nv 1e30 1 0\n" + tri), {"a.obj", "vertex 2"});
   expect_error(user_obj_library(*dir_, "box", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tri,
                                 R"({"shape": "box", "center": [0, 0, 0], "half_extents": [1e300, 1, 1]})"),

@@ -62,7 +62,7 @@ void ontology(std::string_view input) { io::parse_ontology(std::string(input), "
 void lighting(std::string_view input) {
   toml::table table;
   try {
-    table = toml::parse(input, "lighting.toml");
+    table = toml::parse(input, std::string_view("lighting.toml"));
   } catch (const toml::parse_error& e) {
     throw InputError(std::string("lighting.toml: invalid TOML: ") + std::string(e.description()));
   }

@@ -1,5 +1,5 @@
 #pragma once
-/// @file The entry points of the fuzz harnesses (tests/fuzz/README.md): each feeds one input to
+/// @file The entry points of the fuzz harnesses (docs/fuzzing.md): each feeds one input to
 /// one reader the way the CLI does. Bad input may be refused (InputError, IoError); anything else
 /// (another exception, a crash, a sanitizer report) is a bug. The libFuzzer harnesses and the
 /// corpus replay test (tests/app/fuzz_corpus_test.cpp) share them.
