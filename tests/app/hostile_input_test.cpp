@@ -142,6 +142,17 @@ TEST_F(GenerateErrors, ClearLinesForCommandsAndRanges) {
   EXPECT_EQ(huge.code, 2) << huge.err;
 }
 
+TEST_F(GenerateErrors, CostGuardRefusesWhatTheMachineCannotDo) {
+  // A 10 km far plane: ~1e5 chunks in one view, 2.5e7 placement points per frame.
+  expect_refused(args({"--overwrite", "--set", "camera.far=10000"}), 2, {"placement points", "chunks", "--force"});
+  // A chunk of 1024 m at 1 cm vertex spacing: 1e10 vertices per chunk.
+  expect_refused(args({"--overwrite", "--set", "terrain.chunk_size=1024", "--set", "terrain.vertex_spacing=0.01"}), 2,
+                 {"GB of memory", "--force"});
+  const ProcessResult world = run_silva({"world", "--seed", "1", "--center", "0,0", "--radius", "90000"}, dir_);
+  EXPECT_EQ(world.code, 2) << world.err;
+  EXPECT_NE(world.err.find("--force"), std::string::npos) << world.err;
+}
+
 TEST_F(GenerateErrors, OverwriteThroughASymlinkedSeedFolderIsRefused) {
   const fs::path outside = dir_ / "outside";
   fs::create_directories(outside);
