@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <chrono>
 
 #include "app/config/config_checks.hpp"
@@ -43,17 +44,6 @@ std::string one_line(std::string_view text) {
                    std::string(closest_key(name)) + "'?)");
 }
 
-/// The dotted name of a table as written: `[foo.bar.baz]` parses as foo holding only bar holding
-/// only baz, so follow single sub-tables down.
-std::string table_path(std::string name, const toml::table& table) {
-  const toml::table* t = &table;
-  while (t->size() == 1 && t->begin()->second.is_table()) {
-    name += "." + std::string(t->begin()->first.str());
-    t = t->begin()->second.as_table();
-  }
-  return name;
-}
-
 /// Walks a parsed table: every leaf must be a schema key; presets are kept aside.
 void read_table(LoadedConfig& loaded, const toml::table& table, const std::string& prefix) {
   for (const auto& [k, node] : table) {
@@ -76,15 +66,15 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       }
       parse_weather_tables(*node.as_table(), loaded.source);
       loaded.weather_presets = *node.as_table();
-    } else if (node.is_table() && is_section(name)) {
+    } else if (node.is_table() && node.as_table()->empty() && !is_section(name)) {
+      // An empty table sets nothing, so no key below it would be reported: name the table.
+      throw InputError(where + ": unknown table [" + name + "] (the tables are sections like [" +
+                       std::string(closest_section(name)) + "] and [lighting.presets.<name>])");
+    } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {
       throw InputError(where + ": '" + name + "' must be a table of keys [" + name + "], got " +
                        describe_node(node));
-    } else if (node.is_table()) {
-      throw InputError(where + ": unknown table [" + table_path(name, *node.as_table()) +
-                       "] (the tables are sections like [" + std::string(closest_section(name)) +
-                       "] and [lighting.presets.<name>])");
     } else {
       unknown_key(where, name);
     }
@@ -149,6 +139,10 @@ LoadedConfig parse_config_text(std::string_view text, const std::string& source)
 }
 
 LoadedConfig read_config_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError("config file '" + path + "' not found");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("config file '" + path + "' is a directory, expected a TOML file");
   return parse_config_text(limits::read_input_file(path, "config file"), path);
 }
 
