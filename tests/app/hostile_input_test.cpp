@@ -29,6 +29,15 @@ class ScopedEnv {
   const char* name_;
 };
 
+/// True once process `pid` has a handler for SIGTERM (bit 15 of SigCgt in /proc/<pid>/status).
+bool catches_sigterm(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("SigCgt:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (SIGTERM - 1)) & 1;
+  return false;
+}
+
 /// JSON text of a pose whose position is nested `depth` arrays deep.
 std::string deep_pose(int depth) {
   return R"({"poses": [{"position": )" + std::string(size_t(depth), '[') + "1" + std::string(size_t(depth), ']') +
@@ -243,7 +252,10 @@ TEST_F(GenerateErrors, TerminateWhilePlanningStopsAtOnce) {
   a[4] = planning.string();  // --out
   fs::create_directories(dir_ / "child");
   const ChildProcess child = start_silva(a, dir_ / "child");
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // Wait until the process catches SIGTERM (its handler is installed first thing), then let it plan.
+  for (int k = 0; k < 600 && !catches_sigterm(child.pid); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   const auto t0 = std::chrono::steady_clock::now();
   ::kill(child.pid, SIGTERM);
   const ProcessResult r = wait_silva(child);
