@@ -4,7 +4,7 @@ JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 SILVA      := $(BUILD)/silva
 
-.PHONY: deps configure build cli run test bench sanitize tidy test-slurm check-export clean
+.PHONY: deps configure build cli run test bench sanitize tidy fuzz test-slurm check-export clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -50,10 +50,20 @@ tidy:
 	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_BENCH=OFF >/dev/null
 	bash scripts/tidy.sh build-tidy $(JOBS)
 
+## make fuzz: the libFuzzer harnesses of every input reader (clang-14, ASan + UBSan, docs/fuzzing.md),
+## each run FUZZ_SECONDS (default 600) from its seed corpus; a crash leaves its input in build-fuzz/crashes/
+FUZZ_SECONDS ?= 600
+fuzz:
+	@bash scripts/install-deps.sh --fuzz
+	@CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DSILVA_FUZZ=ON \
+		-DSILVA_BUILD_TESTS=OFF -DSILVA_BUILD_BENCH=OFF >/dev/null
+	@cmake --build build-fuzz --target fuzz_harnesses -j $(JOBS)
+	bash scripts/fuzz.sh build-fuzz $(FUZZ_SECONDS)
+
 ## make test-slurm: a throw-away single-node Slurm cluster here (root or sudo); checks that a
 ## 2-shard job array + silva merge equals a single-process run byte for byte
 test-slurm: cli
 	SILVA=$(SILVA) bash scripts/test-slurm.sh
 
 clean:
-	rm -rf $(BUILD) build-sanitize build-tidy
+	rm -rf $(BUILD) build-sanitize build-tidy build-fuzz

@@ -1,7 +1,10 @@
 #include "assets/import_mesh.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <span>
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
@@ -10,9 +13,11 @@
 #include <assimp/scene.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::assets {
 
@@ -42,11 +47,14 @@ class AssetImporter {
 
   std::vector<Mesh> run() {
     if (!std::filesystem::is_regular_file(file_)) fail("not found");
-    scene_ = importer_.ReadFile(file_.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                    aiProcess_GenSmoothNormals | aiProcess_FlipUVs |
-                                                    aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+    scene_ = importer_.ReadFile(file_.string(), aiProcess_ValidateDataStructure);
     if (scene_ == nullptr || scene_->mRootNode == nullptr || (scene_->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
       fail(std::string("cannot be read: ") + importer_.GetErrorString());
+    // Checked as the file states them: joining identical vertices would merge a NaN into another one.
+    check_file_vertices();
+    scene_ = importer_.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                           aiProcess_GenSmoothNormals | aiProcess_FlipUVs | aiProcess_SortByPType);
+    if (scene_ == nullptr) fail(std::string("cannot be read: ") + importer_.GetErrorString());
     std::vector<const aiNode*> levels;
     for (int k = 0;; ++k) {
       const aiNode* n = scene_->mRootNode->FindNode(("lod" + std::to_string(k)).c_str());
@@ -67,6 +75,29 @@ class AssetImporter {
  private:
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError("asset file " + file_.string() + " (" + where_ + "): " + what);
+  }
+
+  /// Every vertex of the file finite and within limits::kMaxAssetCoordinate of the origin, every
+  /// face index within its mesh.
+  void check_file_vertices() const {
+    const float limit = float(limits::kMaxAssetCoordinate);
+    for (unsigned m = 0; m < scene_->mNumMeshes; ++m) {
+      const aiMesh& am = *scene_->mMeshes[m];
+      const std::string mesh_name = "mesh '" + std::string(am.mName.C_Str()) + "'";
+      for (unsigned v = 0; v < am.mNumVertices; ++v) {
+        const aiVector3D& p = am.mVertices[v];
+        const Vec3f q(p.x, p.y, p.z);
+        if (!q.allFinite() || q.cwiseAbs().maxCoeff() > limit)
+          fail(mesh_name + " vertex " + std::to_string(v) + " is not a finite position within " +
+               std::to_string(int(limit)) + " m of the origin");
+      }
+      for (unsigned f = 0; f < am.mNumFaces; ++f)
+        for (unsigned k = 0; k < am.mFaces[f].mNumIndices; ++k)
+          if (am.mFaces[f].mIndices[k] >= am.mNumVertices)
+            fail(mesh_name + " face " + std::to_string(f) + " has vertex index " +
+                 std::to_string(am.mFaces[f].mIndices[k]) + " (the mesh has " + std::to_string(am.mNumVertices) +
+                 " vertices)");
+    }
   }
 
   static aiMatrix4x4 global_transform(const aiNode& node) {
@@ -105,7 +136,12 @@ class AssetImporter {
 
     const uint32_t base = uint32_t(out.positions.size());
     for (unsigned v = 0; v < am.mNumVertices; ++v) {
-      out.positions.push_back(to_silva(transform * am.mVertices[v]));
+      const Vec3f p = to_silva(transform * am.mVertices[v]);
+      if (!p.allFinite() || p.cwiseAbs().maxCoeff() > float(limits::kMaxAssetCoordinate))
+        fail("mesh '" + std::string(am.mName.C_Str()) + "' vertex " + std::to_string(v) +
+             " is placed by its node transform outside " + std::to_string(int(limits::kMaxAssetCoordinate)) +
+             " m of the origin (or at no finite position)");
+      out.positions.push_back(p);
       aiVector3D n = am.mNormals ? normal_matrix * am.mNormals[v] : aiVector3D(0, 0, 1);
       const Vec3f ns = to_silva(n);
       out.normals.push_back(ns.norm() > 0 ? Vec3f(ns.normalized()) : Vec3f::UnitZ());
@@ -187,20 +223,48 @@ class AssetImporter {
 
   /// Decodes a texture: embedded ("*N" or by name) or a file relative to the asset.
   cv::Mat read_texture(const std::string& ref) const {
+    // OpenCV prints its own warnings on stderr for images it refuses; Silva's error line says it.
+    cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
     cv::Mat image;
     if (const aiTexture* t = scene_->GetEmbeddedTexture(ref.c_str())) {
       if (t->mHeight == 0) {
+        check_png_size(ref, {reinterpret_cast<const uint8_t*>(t->pcData), t->mWidth});
         const cv::Mat bytes(1, int(t->mWidth), CV_8U, t->pcData);
         image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
       } else {
+        check_texture_size(ref, t->mWidth, t->mHeight);
         image.create(int(t->mHeight), int(t->mWidth), CV_8UC4);  // aiTexel is BGRA
         std::memcpy(image.data, t->pcData, size_t(t->mWidth) * t->mHeight * 4);
       }
     } else {
-      image = cv::imread((file_.parent_path() / ref).string(), cv::IMREAD_UNCHANGED);
+      const std::filesystem::path path = file_.parent_path() / ref;
+      std::ifstream in(path, std::ios::binary);
+      std::array<char, 24> head{};
+      in.read(head.data(), head.size());
+      check_png_size(ref, {reinterpret_cast<const uint8_t*>(head.data()), size_t(in.gcount())});
+      image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
     }
     if (image.empty()) fail("texture '" + ref + "' cannot be decoded");
+    check_texture_size(ref, unsigned(image.cols), unsigned(image.rows));
     return image;
+  }
+
+  /// Refuses a texture larger than limits::kMaxTextureSide on a side.
+  void check_texture_size(const std::string& ref, unsigned width, unsigned height) const {
+    const unsigned side = unsigned(limits::kMaxTextureSide);
+    if (width > side || height > side)
+      fail("texture '" + ref + "' is " + std::to_string(width) + "x" + std::to_string(height) + " pixels (at most " +
+           std::to_string(side) + " per side)");
+  }
+
+  /// Reads the size of a PNG from its header (before decoding allocates it); other formats pass.
+  void check_png_size(const std::string& ref, std::span<const uint8_t> bytes) const {
+    static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (bytes.size() < 24 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return;
+    const auto be32 = [&](size_t at) {
+      return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    };
+    check_texture_size(ref, be32(16), be32(20));
   }
 
   const std::filesystem::path& file_;

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::assets {
 
@@ -77,10 +77,12 @@ class Reader {
   }
   Vec3f vec3(const char* key) const {
     const json& v = need(key);
+    constexpr double kMax = limits::kMaxAssetCoordinate;
     if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) {
-          return e.is_number() && std::isfinite(e.get<double>());
+          return e.is_number() && std::abs(e.get<double>()) <= kMax;
         }))
-      fail(key, "must be an array of 3 finite numbers");
+      fail(key, "must be an array of 3 numbers in [-" + std::to_string(int(kMax)) + ", " + std::to_string(int(kMax)) +
+                    "] metres");
     return Vec3f(v[0].get<float>(), v[1].get<float>(), v[2].get<float>());
   }
   Role role(const json& v, const std::string& key) const {
@@ -105,7 +107,7 @@ CollisionProxy read_proxy(const Reader& r) {
   const auto* it = std::find(std::begin(kShapeNames), std::end(kShapeNames), shape);
   if (it == std::end(kShapeNames)) r.fail("shape", "must be one of none, cylinder, capsule, box, sphere");
   p.shape = CollisionProxy::Shape(it - std::begin(kShapeNames));
-  constexpr float kMax = 1e4f;
+  constexpr float kMax = float(limits::kMaxAssetCoordinate);
   if (p.shape == CollisionProxy::Shape::None) return p;
   p.center = r.vec3("center");
   if (p.shape == CollisionProxy::Shape::Box) {
@@ -218,9 +220,12 @@ std::string manifest_text(std::span<const ManifestEntry> entries) {
 }
 
 std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path.string() + ": asset library manifest not found or unreadable");
-  json doc = json::parse(f, nullptr, false);
+  return parse_manifest(limits::read_input_file(path, "asset library manifest"), path);
+}
+
+std::vector<ManifestEntry> parse_manifest(const std::string& text, const std::filesystem::path& path) {
+  limits::check_json_depth(text, path.string());
+  json doc = json::parse(text, nullptr, false);
   if (doc.is_discarded()) throw InputError(path.string() + ": not valid JSON");
   const Reader top(path, doc, "library");
   if (!top.need("format").is_string() || top.need("format").get<std::string>() != kFormat)

@@ -49,4 +49,8 @@ std::string manifest_text(std::span<const ManifestEntry> entries);
 /// Reads and validates library.json; throws InputError naming the file and key on any problem.
 std::vector<ManifestEntry> read_manifest(const std::filesystem::path& path);
 
+/// Parses the text of a manifest read from `path` (named in every error); what read_manifest does
+/// after reading the file.
+std::vector<ManifestEntry> parse_manifest(const std::string& text, const std::filesystem::path& path);
+
 }  // namespace silva::assets

@@ -50,7 +50,11 @@ fs::path temp_path_for(const fs::path& path) {
 
 void write_file_atomic(const fs::path& path, std::span<const uint8_t> bytes) {
   const fs::path tmp = temp_path_for(path);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // A new file of our own, never through a link: a leftover temp name (a killed run's file, or a
+  // link planted to redirect the write) is unlinked, which removes the name, not its target.
+  constexpr int kFlags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+  int fd = ::open(tmp.c_str(), kFlags, 0644);
+  if (fd < 0 && errno == EEXIST && ::unlink(tmp.c_str()) == 0) fd = ::open(tmp.c_str(), kFlags, 0644);
   if (fd < 0) fail(path, "cannot create temp file", errno);
   int err = write_all(fd, bytes);
   if (::close(fd) != 0 && err == 0) err = errno;

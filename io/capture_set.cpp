@@ -57,6 +57,17 @@ std::string frame_file(const std::string& folder, int frame, const std::string& 
   return folder + "/" + name + "." + ext;
 }
 
+std::vector<std::string> frame_file_names(const OutputSelection& selection, int frame) {
+  std::vector<std::string> names;
+  for (int k = 0; k < kOutputTypeCount; ++k) {
+    const OutputType t = OutputType(k);
+    if (!selection.has(t)) continue;
+    names.push_back(frame_file(output_type_name(t), frame, t == OutputType::DepthExr ? "exr" : "png"));
+    if (t == OutputType::Instance) names.push_back(frame_file(output_type_name(t), frame, "json"));
+  }
+  return names;
+}
+
 EncodedSet encode_capture_set(const LabelPlanes& gbuffer, std::span<const uint8_t> rgb, const Ontology& ontology,
                               const OutputSelection& selection, int frame) {
   std::vector<OutputType> todo;

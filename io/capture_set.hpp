@@ -23,6 +23,10 @@ using EncodedSet = std::vector<EncodedFile>;
 /// "<folder>/<frame as %06d>.<ext>", e.g. frame_file("camera", 7, "json") = "camera/000007.json".
 std::string frame_file(const std::string& folder, int frame, const std::string& ext);
 
+/// The image files encode_capture_set writes for frame `frame` of `selection`, in the same order
+/// (relative to the sequence folder; the camera file is not among them).
+std::vector<std::string> frame_file_names(const OutputSelection& selection, int frame);
+
 /// Encodes the selected outputs of frame `frame` from its G-buffer and RGB image (interleaved
 /// R, G, B, width*height*3 bytes; may be empty when rgb is not selected) on the caller's TBB
 /// arena, one task per output. The result does not depend on the thread count.

@@ -1,25 +1,21 @@
 #include "io/json_read.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::io {
 
 std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return limits::read_input_file(path, "input file");
 }
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& where) {
   try {
+    limits::check_json_depth(text, where);
     return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax errors and numbers beyond a double (1e400)
     throw InputError(where + ": not valid JSON (" + e.what() + ")");
   }
 }
@@ -34,7 +30,7 @@ const nlohmann::json& json_member(const nlohmann::json& obj, const std::string& 
 double json_number(const nlohmann::json& obj, const std::string& key, const std::string& where) {
   const nlohmann::json& v = json_member(obj, key, where);
   if (!v.is_number() || !std::isfinite(v.get<double>()))
-    throw InputError(where + ": '" + key + "' must be a number, got " + v.dump());
+    throw InputError(where + ": '" + key + "' must be a number, got " + limits::quoted_prefix(v.dump()));
   return v.get<double>();
 }
 
@@ -43,13 +39,14 @@ long long json_int(const nlohmann::json& obj, const std::string& key, long long 
   const nlohmann::json& v = json_member(obj, key, where);
   if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
     throw InputError(where + ": '" + key + "' must be an integer " + std::to_string(lo) + ".." +
-                     std::to_string(hi) + ", got " + v.dump());
+                     std::to_string(hi) + ", got " + limits::quoted_prefix(v.dump()));
   return v.get<long long>();
 }
 
 std::string json_string(const nlohmann::json& obj, const std::string& key, const std::string& where) {
   const nlohmann::json& v = json_member(obj, key, where);
-  if (!v.is_string()) throw InputError(where + ": '" + key + "' must be a string, got " + v.dump());
+  if (!v.is_string())
+    throw InputError(where + ": '" + key + "' must be a string, got " + limits::quoted_prefix(v.dump()));
   return v.get<std::string>();
 }
 

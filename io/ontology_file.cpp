@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/json_read.hpp"
 
 namespace silva::io {
@@ -31,10 +32,10 @@ Ontology parse_ontology(const std::string& text, const std::string& source) {
     c.name = json_string(e, "name", where);
     const nlohmann::json& color = json_member(e, "color", where);
     if (!color.is_array() || color.size() != 3)
-      throw InputError(where + ": 'color' must be [r, g, b] with integers 0..255, got " + color.dump());
+      throw InputError(where + ": 'color' must be [r, g, b] with integers 0..255, got " + limits::quoted_prefix(color.dump()));
     for (int a = 0; a < 3; ++a) {
       if (!color[a].is_number_integer() || color[a].get<long long>() < 0 || color[a].get<long long>() > 255)
-        throw InputError(where + ": 'color' must be [r, g, b] with integers 0..255, got " + color.dump());
+        throw InputError(where + ": 'color' must be [r, g, b] with integers 0..255, got " + limits::quoted_prefix(color.dump()));
       c.color[a] = uint8_t(color[a].get<int>());
     }
     c.rugd = json_string(e, "rugd", where);

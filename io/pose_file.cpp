@@ -9,13 +9,26 @@
 
 #include "core/camera.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/json_read.hpp"
 
 namespace silva::io {
 
 namespace {
 
-PoseEntry pose_from_angles_entry(const Vec3d& position, bool has_z, double yaw, double pitch, double roll) {
+/// Refuses a position outside the world Silva can build exactly (limits::kMaxPoseCoordinate).
+void check_position(const Vec3d& position, const std::string& where) {
+  const double xy = std::max(std::abs(position.x()), std::abs(position.y()));
+  if (xy > limits::kMaxPoseCoordinate || std::abs(position.z()) > limits::kMaxPoseHeight)
+    throw InputError(where + ": position (" + std::to_string(position.x()) + ", " + std::to_string(position.y()) +
+                     ", " + std::to_string(position.z()) + ") is out of range (|x|, |y| <= " +
+                     std::to_string(int(limits::kMaxPoseCoordinate)) + " m, |z| <= " +
+                     std::to_string(int(limits::kMaxPoseHeight)) + " m)");
+}
+
+PoseEntry pose_from_angles_entry(const Vec3d& position, bool has_z, double yaw, double pitch, double roll,
+                                 const std::string& where) {
+  check_position(position, where);
   PoseEntry p;
   p.position = position;
   p.has_z = has_z;
@@ -33,6 +46,7 @@ PoseEntry pose_from_matrix(const nlohmann::json& e, const std::string& where) {
     for (int c = 0; c < 3; ++c) p.rotation(r, c) = m[r][c];
     p.position[r] = m[r][3];
   }
+  check_position(p.position, where);
   const double bottom = std::max({std::abs(m[3][0]), std::abs(m[3][1]), std::abs(m[3][2]), std::abs(m[3][3] - 1.0)});
   if (bottom > kOrthonormalTolerance)
     throw InputError(where + ": 'camera_to_world' bottom row must be [0, 0, 0, 1]");
@@ -71,10 +85,12 @@ PoseEntry pose_from_json(const nlohmann::json& e, const std::string& where) {
                         std::all_of(pos.begin(), pos.end(), [](const nlohmann::json& v) {
                           return v.is_number() && std::isfinite(v.get<double>());
                         });
-  if (!shape_ok) throw InputError(where + ": 'position' must be [x, y, z] or [x, y] of numbers, got " + pos.dump());
+  if (!shape_ok)
+    throw InputError(where + ": 'position' must be [x, y, z] or [x, y] of numbers, got " +
+                     limits::quoted_prefix(pos.dump()));
   const Vec3d position(pos[0].get<double>(), pos[1].get<double>(), pos.size() == 3 ? pos[2].get<double>() : 0.0);
   return pose_from_angles_entry(position, pos.size() == 3, json_number(e, "yaw_deg", where),
-                                json_number(e, "pitch_deg", where), json_number(e, "roll_deg", where));
+                                json_number(e, "pitch_deg", where), json_number(e, "roll_deg", where), where);
 }
 
 std::string trim(const std::string& s) {
@@ -105,12 +121,22 @@ void require_poses(const std::vector<PoseEntry>& poses, const std::string& sourc
   if (poses.empty()) throw InputError(source + ": holds no poses; the custom sequence needs at least one");
 }
 
+/// Refuses a pose file with more poses than frame files can number.
+void check_pose_count(size_t count, const std::string& source) {
+  if (count > size_t(limits::kMaxFramesPerSequence))
+    throw InputError(source + ": more than " + std::to_string(limits::kMaxFramesPerSequence) +
+                     " poses (frame files are numbered with six digits)");
+}
+
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
 }  // namespace
 
 std::vector<PoseEntry> parse_pose_json(const std::string& text, const std::string& source) {
   const nlohmann::json j = parse_json_text(text, source);
   const nlohmann::json& list = json_member(j, "poses", source);
   if (!list.is_array()) throw InputError(source + ": 'poses' must be a list");
+  check_pose_count(list.size(), source);
   std::vector<PoseEntry> poses;
   for (size_t k = 0; k < list.size(); ++k) poses.push_back(pose_from_json(list[k], source + ": pose " + std::to_string(k)));
   require_poses(poses, source);
@@ -120,7 +146,8 @@ std::vector<PoseEntry> parse_pose_json(const std::string& text, const std::strin
 std::vector<PoseEntry> parse_pose_csv(const std::string& text, const std::string& source) {
   static const char* kHeader = "x,y,z,yaw_deg,pitch_deg,roll_deg";
   static const char* kColumns[6] = {"x", "y", "z", "yaw_deg", "pitch_deg", "roll_deg"};
-  std::stringstream in(text);
+  // A byte-order mark (spreadsheet exports write one) is not part of the header.
+  std::stringstream in(std::string(text.starts_with(kUtf8Bom) ? text.substr(kUtf8Bom.size()) : text));
   std::string line;
   std::vector<PoseEntry> poses;
   bool header_seen = false;
@@ -145,7 +172,8 @@ std::vector<PoseEntry> parse_pose_csv(const std::string& text, const std::string
       if (!parse_number(fields[c], v[c]))
         throw InputError(where + ": '" + kColumns[c] + "' must be a number, got \"" + fields[c] + "\"");
     }
-    poses.push_back(pose_from_angles_entry(Vec3d(v[0], v[1], v[2]), !fields[2].empty(), v[3], v[4], v[5]));
+    check_pose_count(poses.size() + 1, source);
+    poses.push_back(pose_from_angles_entry(Vec3d(v[0], v[1], v[2]), !fields[2].empty(), v[3], v[4], v[5], where));
   }
   if (!header_seen) throw InputError(source + ": empty; the first line must be \"" + std::string(kHeader) + "\"");
   require_poses(poses, source);

@@ -1,12 +1,12 @@
 #include "io/run_folder.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/atomic_file.hpp"
 
 namespace silva::io {
@@ -44,8 +44,10 @@ void empty_dir(const fs::path& dir) {
   if (ec) throw IoError("cannot list " + dir.string() + ": " + ec.message());
 }
 
-void write_marker(const fs::path& run_dir, int64_t seed, const std::string& config_hash) {
+void write_marker(const fs::path& run_dir, int64_t seed, const std::string& config_hash,
+                  const std::string& config_text) {
   nlohmann::json j = {{"seed", seed}, {"config_hash", config_hash}};
+  if (!config_text.empty()) j["config"] = config_text;
   write_file_atomic(run_dir / kMarker, j.dump(2) + "\n");
 }
 }  // namespace
@@ -58,12 +60,15 @@ std::string seed_folder_name(int64_t seed) {
 
 std::optional<RunMarker> read_run_marker(const fs::path& run_dir) {
   const fs::path path = run_dir / kMarker;
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec))) return std::nullopt;
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    return RunMarker{j.at("seed").get<int64_t>(), j.at("config_hash").get<std::string>()};
-  } catch (const nlohmann::json::exception& e) {
+    const std::string text = limits::read_input_file(path, "run marker");
+    limits::check_json_depth(text, path.string());
+    const nlohmann::json j = nlohmann::json::parse(text);
+    return RunMarker{j.at("seed").get<int64_t>(), j.at("config_hash").get<std::string>(),
+                     j.value("config", std::string())};
+  } catch (const std::exception& e) {
     throw InputError(path.string() + ": corrupt run marker (" + e.what() +
                      "); remove the folder or use --overwrite");
   }
@@ -84,9 +89,12 @@ int64_t find_resumable_seed(const fs::path& output_dir) {
 }
 
 fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std::string& config_hash,
-                            FolderMode mode) {
+                            FolderMode mode, const std::string& config_text) {
   fs::path run_dir = output_dir / seed_folder_name(seed);
   std::error_code ec;
+  if (mode == FolderMode::Overwrite && fs::is_symlink(run_dir, ec))
+    throw InputError(run_dir.string() + " is a symbolic link; --overwrite empties only a real folder (remove the "
+                     "link or pass the folder it points to as --out)");
   const bool exists = fs::exists(run_dir, ec);
   if (exists && !fs::is_directory(run_dir, ec))
     throw InputError("output path " + run_dir.string() + " exists and is not a folder");
@@ -100,7 +108,7 @@ fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std:
       empty_dir(run_dir);
     } else if (!same) {
       throw InputError(run_dir.string() + " holds " +
-                       (marker ? std::string("a run with a different config")
+                       (marker ? std::string("a run with a different config or input files (pose file, asset library)")
                                : std::string("files that are not a Silva run")) +
                        "; use --overwrite to replace it or choose another --out");
     } else if (mode == FolderMode::Fresh) {
@@ -111,7 +119,7 @@ fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std:
     }
   }
   create_dirs(run_dir);
-  write_marker(run_dir, seed, config_hash);
+  write_marker(run_dir, seed, config_hash, config_text);
   return run_dir;
 }
 

@@ -18,7 +18,8 @@ std::string seed_folder_name(int64_t seed);
 /// Reads the config hash and seed recorded in `<dir>/.silva-run.json`; nullopt when absent.
 struct RunMarker {
   int64_t seed = 0;          ///< Seed of the run.
-  std::string config_hash;   ///< Hash of the resolved config (without output.dir).
+  std::string config_hash;   ///< Hash of the resolved config (without output.dir) and the input files' contents.
+  std::string config;        ///< The resolved config as TOML (without output.dir); "" in older markers.
 };
 /// Reads the marker of a run folder; nullopt when the folder has none. Throws InputError if corrupt.
 std::optional<RunMarker> read_run_marker(const std::filesystem::path& run_dir);
@@ -31,9 +32,11 @@ int64_t find_resumable_seed(const std::filesystem::path& output_dir);
 /// A folder holding nothing but leftover temp files (a run killed while writing its marker) counts
 /// as empty. Fresh: the folder must be absent or empty, else InputError suggesting --resume/--overwrite.
 /// Resume: the marker's config hash must match; leftover temp files are deleted.
-/// Overwrite: the folder is emptied first. A different config without Overwrite is InputError.
-/// Unwritable paths throw IoError. Returns the run folder.
+/// Overwrite: the folder is emptied first (InputError when it is a symbolic link). A different
+/// config without Overwrite is InputError. Unwritable paths throw IoError. The marker records
+/// `config_text` (what `--resume` reloads) when given. Returns the run folder.
 std::filesystem::path prepare_run_folder(const std::filesystem::path& output_dir, int64_t seed,
-                                         const std::string& config_hash, FolderMode mode);
+                                         const std::string& config_hash, FolderMode mode,
+                                         const std::string& config_text = "");
 
 }  // namespace silva::io

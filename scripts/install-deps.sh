@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian (bookworm) packages Silva's build and tests need; a fast no-op
 # (one dpkg-query call) when every one is already installed. Runs as root, or through sudo.
-# Usage: scripts/install-deps.sh [--bench] [--tidy]
+# Usage: scripts/install-deps.sh [--bench] [--tidy] [--fuzz]
 #   --bench  also what `make bench` needs (OpenGL/EGL for the llvmpipe comparison renderer,
 #            matplotlib/numpy for the plots)
 #   --tidy   also clang-tidy, for `make tidy`
+#   --fuzz   also clang and libFuzzer, for `make fuzz`
 # ccache is optional (CMake uses it when present) and git only names the revision; neither is listed.
 # chromium is only for the browser test of `silva view` (headless, driven over its DevTools pipe).
 set -euo pipefail
@@ -24,13 +25,15 @@ BENCH_PKGS=(
   python3-matplotlib python3-numpy
 )
 TIDY_PKGS=(clang-tidy)
+FUZZ_PKGS=(clang-14 libfuzzer-14-dev)
 
 for arg in "$@"; do
   case "$arg" in
     --bench) PKGS+=("${BENCH_PKGS[@]}") ;;
     --tidy) PKGS+=("${TIDY_PKGS[@]}") ;;
-    -h | --help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "install-deps: unknown option '$arg' (allowed: --bench, --tidy)" >&2; exit 2 ;;
+    --fuzz) PKGS+=("${FUZZ_PKGS[@]}") ;;
+    -h | --help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "install-deps: unknown option '$arg' (allowed: --bench, --tidy, --fuzz)" >&2; exit 2 ;;
   esac
 done
 

@@ -48,6 +48,17 @@ int fail(int code, const std::string& message, bool json) {
   return code;
 }
 
+/// The error for a first argument that is not an option and names no command; "" when it is fine.
+std::string unknown_command(int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return "";
+  std::string names;
+  for (const auto& [name, add] : kCommands) {
+    if (std::strcmp(argv[1], name) == 0) return "";
+    names += std::string(names.empty() ? "" : ", ") + name;
+  }
+  return "unknown command '" + std::string(argv[1]) + "' (commands: " + names + "; see silva --help)";
+}
+
 /// A message on one line.
 std::string one_line(std::string text) {
   for (char& c : text) {
@@ -77,6 +88,8 @@ int run_cli(int argc, char** argv) {
     Handler handler = add(app);
     handlers.emplace_back(app.get_subcommand(name), std::move(handler));
   }
+  if (const std::string unknown = unknown_command(argc, argv); !unknown.empty())
+    return fail(kExitBadInput, one_line(unknown), json);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

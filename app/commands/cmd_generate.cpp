@@ -7,7 +7,10 @@
 #include "app/cli/output_check.hpp"
 #include "app/cli/subcommands.hpp"
 #include "app/commands/commands.hpp"
+#include "app/config/config_checks.hpp"
+#include "app/config/cost_estimate.hpp"
 #include "core/error.hpp"
+#include "io/run_folder.hpp"
 
 namespace silva::app {
 
@@ -18,6 +21,7 @@ struct GenerateArgs {
   int threads = 0;
   bool resume = false;
   bool overwrite = false;
+  bool force = false;
   std::optional<std::string> shard;
   OutputFlags output;
 };
@@ -41,24 +45,45 @@ Shard parse_shard(const std::string& text) {
   return shard;
 }
 
+/// `--resume` with neither --config nor --set: the config the run folder's marker records (so the
+/// interrupt hint `silva generate --resume --out DIR --seed N` continues exactly that run); the
+/// defaults when the folder or the recorded config is missing (the folder checks then say why).
+LoadedConfig config_to_resume(const ConfigSources& sources) {
+  LoadedConfig given = load_config(sources);
+  const std::string dir = given.config.output.dir;
+  const int64_t seed = given.seed_given ? given.config.seed : io::find_resumable_seed(dir);
+  const std::filesystem::path run_dir = std::filesystem::path(dir) / io::seed_folder_name(seed);
+  const std::optional<io::RunMarker> marker = io::read_run_marker(run_dir);
+  if (!marker || marker->config.empty()) return given;
+  LoadedConfig loaded = parse_config_text(marker->config, (run_dir / ".silva-run.json").string());
+  loaded.config.output.dir = dir;
+  loaded.config.seed = seed;
+  loaded.seed_given = true;
+  check_config(loaded);
+  return loaded;
+}
+
 int generate(const GenerateArgs& args) {
+  install_interrupt_handler();  // from the start: loading and planning stop at once too
   const Reporter reporter(args.output);
   GenerateRequest request;
   // Shards of one dataset must agree on the seed, so a shard never draws one from the clock.
   const bool draw_seed = !args.resume && !args.shard;
-  request.config = load_run_config(args.sources, reporter, draw_seed);
+  const bool config_from_marker = args.resume && args.sources.file.empty() && args.sources.overrides.empty();
+  request.config =
+      config_from_marker ? config_to_resume(args.sources) : load_run_config(args.sources, reporter, draw_seed);
   if (args.shard) {
     request.shard = parse_shard(*args.shard);
     if (!request.config.seed_given) {
       throw InputError("--shard " + *args.shard + " needs an explicit seed (--seed N or seed in the config)");
     }
   }
+  check_cost(estimate_generate_cost(request.config.config), args.force, "generate");
   check_writable_dir(request.config.config.output.dir);
   request.threads = resolved_threads(args.threads);
   request.resume = args.resume;
   request.overwrite = args.overwrite;
   const ThreadLimit limit(args.threads);
-  install_interrupt_handler();
   return run_generate(request, reporter);
 }
 
@@ -81,6 +106,8 @@ Handler add_generate_command(CLI::App& root) {
       "--resume", args->resume,
       "continue the run already in the folder (seed taken from its marker when not given)");
   cmd->add_flag("--overwrite", args->overwrite, "empty <output.dir>/<seed>/ first")->excludes(resume);
+  cmd->add_flag("--force", args->force,
+                "run even when the cost estimate (memory, placement work per frame) exceeds this machine");
   cmd->add_option_function<std::string>(
          "--shard", [args](const std::string& s) { args->shard = s; },
          "render only frames whose global index mod N = i (needs an explicit seed; finish with "

@@ -1,10 +1,12 @@
 // `silva validate`: load and check a config; print it resolved.
+#include <algorithm>
 #include <memory>
 
 #include "app/cli/command_options.hpp"
 #include "app/cli/reporter.hpp"
 #include "app/cli/subcommands.hpp"
 #include "app/config/config_print.hpp"
+#include "io/pose_file.hpp"
 
 namespace silva::app {
 
@@ -19,6 +21,9 @@ struct ValidateArgs {
 int validate(const ValidateArgs& args) {
   const Reporter reporter(args.output);
   LoadedConfig loaded = load_config(args.sources);
+  const CapturesConfig& captures = loaded.config.captures;
+  if (std::find(captures.sequences.begin(), captures.sequences.end(), "custom") != captures.sequences.end())
+    io::read_pose_file(captures.poses_file);  // the pose file is part of what generate would read
   resolve_seed(loaded);
   const std::string name = args.sources.file.empty() ? "built-in defaults" : args.sources.file;
   if (loaded.seed_from_clock) reporter.note("silva: no seed given; this run would draw one from the clock");

@@ -1,13 +1,17 @@
 // `silva world`: check every input, then build (and optionally export) a world.
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <memory>
 
 #include "app/cli/command_options.hpp"
 #include "app/cli/output_check.hpp"
 #include "app/cli/subcommands.hpp"
 #include "app/commands/commands.hpp"
+#include "app/config/cost_estimate.hpp"
+#include "app/config/number_format.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::app {
 
@@ -22,6 +26,7 @@ struct WorldArgs {
   std::string map_path;
   bool instancing = false;
   bool stats = false;
+  bool force = false;
   OutputFlags output;
 };
 
@@ -35,12 +40,17 @@ bool parse_double(std::string_view text, double& out) {
 /// Parses "x,y" (metres).
 WorldRequest::Disc parse_center(const std::string& text, double radius) {
   WorldRequest::Disc disc;
+  if (!(radius > 0 && radius <= limits::kMaxPoseCoordinate))
+    throw InputError("--radius " + format_number(radius) + ": must be more than 0 and at most " +
+                     format_number(limits::kMaxPoseCoordinate) + " metres");
   disc.radius = radius;
   const size_t comma = text.find(',');
   const std::string_view view = text;
   if (comma == std::string::npos || !parse_double(view.substr(0, comma), disc.x) ||
-      !parse_double(view.substr(comma + 1), disc.y)) {
-    throw InputError("--center " + text + ": expected x,y in metres, e.g. --center=-40.5,12");
+      !parse_double(view.substr(comma + 1), disc.y) ||
+      std::max(std::abs(disc.x), std::abs(disc.y)) > limits::kMaxPoseCoordinate) {
+    throw InputError("--center " + text + ": expected x,y in metres (|x|, |y| <= " +
+                     format_number(limits::kMaxPoseCoordinate) + "), e.g. --center=-40.5,12");
   }
   return disc;
 }
@@ -63,6 +73,7 @@ int world(const WorldArgs& args) {
   WorldRequest request;
   request.config = load_run_config(args.sources, reporter, /*draw_seed=*/true);
   if (args.center) request.region = parse_center(*args.center, *args.radius);
+  check_cost(estimate_world_cost(request.config.config, args.radius), args.force, "world");
   if (!args.export_path.empty()) {
     request.export_path = args.export_path;
     if (!has_extension(request.export_path, ".glb")) {
@@ -101,8 +112,7 @@ Handler add_world_command(CLI::App& root) {
       ->type_name("X,Y");
   CLI::Option* radius = cmd->add_option_function<double>(
       "--radius", [args](double r) { args->radius = r; }, "radius of the disc to build, metres")
-      ->type_name("R")
-      ->check(CLI::PositiveNumber);
+      ->type_name("R");
   center->needs(radius);
   radius->needs(center);
   CLI::Option* exported = cmd->add_option("--export", args->export_path,
@@ -115,6 +125,7 @@ Handler add_world_command(CLI::App& root) {
                   "write a top-down class map of the world (0.5 m per pixel, ontology colours)")
       ->type_name("FILE.png");
   cmd->add_flag("--stats", args->stats, "print chunk, object and triangle counts and timings");
+  cmd->add_flag("--force", args->force, "build even when the estimate exceeds this machine's memory");
   add_output_flags(*cmd, args->output);
   cmd->footer(
       "Examples:\n"

@@ -57,6 +57,7 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   const ScratchFolder scratch{fs::temp_directory_path() / ("silva-bench-" + std::to_string(getpid()))};
 
   install_interrupt_handler();
+  begin_writing();  // an interrupted bench still writes what it measured
   reporter.note("silva bench (" + plan.kind + "): results go to " + dir.string() +
                 " (Ctrl-C stops early and writes the figures measured so far, marked partial)");
   const auto t0 = SteadyClock::now();

@@ -14,6 +14,7 @@
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
+#include "io/run_lock.hpp"
 #include "app/schedule/world_schedule.hpp"
 #include "systems/cast_lidar.hpp"
 
@@ -117,7 +118,13 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
       schedule.plan(std::move(poses), [&](const std::string& w) { reporter.warn(w); });
   const double plan_s = plan_clock.seconds();
 
-  const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(loaded), folder_mode(request));
+  // From here on files are written: an interrupt asks for a clean stop. The run folder is locked
+  // for the whole run (shards share it), so no other writer mixes frames into it.
+  begin_writing();
+  const io::RunLock lock = io::lock_run_folder(fs::path(cfg.output.dir) / io::seed_folder_name(cfg.seed),
+                                               /*exclusive=*/!request.shard);
+  const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, run_identity_hash(loaded, setup),
+                                                  folder_mode(request), resumable_config_text(loaded));
   // Noted once every input is checked, so bad input prints only its error line (a seed drawn
   // from the clock was noted when it was drawn).
   if (!loaded.seed_from_clock)
@@ -143,7 +150,8 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   if (stats.stopped) {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     throw Interrupted("interrupted after " + std::to_string(stats.frames_written) +
-                      " frames; continue with: silva generate --resume --out " + cfg.output.dir);
+                      " frames; continue with: silva generate --resume --out " + cfg.output.dir + " --seed " +
+                      std::to_string(cfg.seed));
   }
   if (request.shard) {
     record["shard"] = {{"index", request.shard->index}, {"count", request.shard->count}};

@@ -36,6 +36,8 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
   };
   if (io::OutputSelection::from_names(loaded.config.output.types).has(io::OutputType::Lidar))
     manifest["sensors"]["lidar"] = lidar_description(loaded, setup);
+  if (frames_per_sequence.count("custom"))
+    manifest["sha256"]["poses_file"] = io::sha256_file(loaded.config.captures.poses_file);
   return manifest;
 }
 

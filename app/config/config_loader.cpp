@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <chrono>
 
 #include "app/config/config_checks.hpp"
 #include "app/config/config_schema.hpp"
@@ -13,6 +11,7 @@
 #include "app/config/lidar_config.hpp"
 #include "app/config/lighting_config.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::app {
 
@@ -74,6 +73,10 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
         throw InputError(where + ": lidar.presets must hold tables [lidar.presets.<name>], got " + describe_node(node));
       parse_lidar_presets(*node.as_table(), loaded.source, {}, false);  // checks every key where its source is known
       loaded.lidar_presets = *node.as_table();
+    } else if (node.is_table() && node.as_table()->empty() && !is_section(name)) {
+      // An empty table sets nothing, so no key below it would be reported: name the table.
+      throw InputError(where + ": unknown table [" + name + "] (the tables are sections like [" +
+                       std::string(closest_section(name)) + "] and [lighting.presets.<name>])");
     } else if (node.is_table()) {
       read_table(loaded, *node.as_table(), name);
     } else if (is_section(name)) {
@@ -83,20 +86,6 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
       unknown_key(where, name);
     }
   }
-}
-
-/// Reads a whole file; throws InputError naming it when it is missing or unreadable.
-std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError("config file '" + path + "' not found");
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("config file '" + path + "' is a directory, expected a TOML file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) throw InputError("config file '" + path + "' cannot be read");
-  return text.str();
 }
 
 /// A whole decimal integer (leading zeros allowed, as seeds are printed); nullopt otherwise.
@@ -157,11 +146,18 @@ LoadedConfig parse_config_text(std::string_view text, const std::string& source)
 }
 
 LoadedConfig read_config_file(const std::string& path) {
-  return parse_config_text(read_text_file(path), path);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError("config file '" + path + "' not found");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("config file '" + path + "' is a directory, expected a TOML file");
+  return parse_config_text(limits::read_input_file(path, "config file"), path);
 }
 
 void apply_override(LoadedConfig& loaded, std::string_view assignment) {
-  const std::string where = "--set " + std::string(assignment);
+  const std::string where = "--set " + limits::quoted_prefix(assignment);
+  // One key, one value: a line break would let the text add tables of its own.
+  if (assignment.find_first_of("\n\r") != std::string_view::npos)
+    throw InputError(where + ": holds a line break; one --set sets one key to one value");
   const size_t eq = assignment.find('=');
   if (eq == std::string_view::npos) {
     throw InputError(where + ": expected key=value, e.g. --set camera.fov_deg=75");

@@ -253,6 +253,17 @@ std::string_view closest_key(std::string_view name) {
   return best;
 }
 
+std::string_view closest_section(std::string_view name) {
+  std::string_view best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const ConfigKey& key : config_schema()) {
+    if (key.section().empty()) continue;  // top-level keys (seed)
+    const size_t d = edit_distance(name, key.section());
+    if (d < best_distance) best_distance = d, best = key.section();
+  }
+  return best;
+}
+
 bool is_section(std::string_view name) {
   return std::any_of(config_schema().begin(), config_schema().end(),
                      [&](const ConfigKey& key) { return !name.empty() && key.section() == name; });

@@ -70,4 +70,7 @@ std::string_view closest_key(std::string_view name);
 /// True when `name` is a section of the schema ("camera", "output", ...).
 bool is_section(std::string_view name);
 
+/// The section ("camera") closest to `name` by edit distance.
+std::string_view closest_section(std::string_view name);
+
 }  // namespace silva::app

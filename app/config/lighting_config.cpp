@@ -6,6 +6,7 @@
 
 #include "app/config/config_value.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 
 namespace silva::app {
 
@@ -140,19 +141,17 @@ std::map<std::string, T> parse_root(const toml::table& root, const std::string& 
   return parse_tables<T>(*presets->as_table(), file);
 }
 
-/// Parses a whole lighting file.
+}  // namespace
+
 toml::table read_lighting_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path + ": cannot read the lighting file");
+  const std::string text = limits::read_input_file(path, "lighting file");
   try {
-    return toml::parse_file(path);
+    return toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": invalid TOML: " +
                      std::string(e.description()));
   }
 }
-
-}  // namespace
 
 std::map<std::string, LightingPreset> parse_preset_tables(const toml::table& presets, const std::string& file) {
   return parse_tables<LightingPreset>(presets, file);

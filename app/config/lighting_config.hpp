@@ -33,6 +33,10 @@ std::map<std::string, render::WeatherPreset> parse_weather_tables(const toml::ta
 
 /// Reads a lighting file (configs/lighting.toml) and parses its presets. Throws IoError if the
 /// file cannot be read, InputError if it is not valid TOML or a preset is invalid.
+/// Reads and parses a lighting file (limits::read_input_file); InputError naming it when it is
+/// missing, not a regular file, too large or not TOML.
+toml::table read_lighting_file(const std::string& path);
+
 std::map<std::string, render::LightingPreset> load_lighting_presets(const std::string& path);
 
 /// Reads a lighting file and parses its weather presets; errors as load_lighting_presets.

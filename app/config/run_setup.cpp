@@ -2,6 +2,7 @@
 
 #include <xxhash.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,6 +13,7 @@
 #include "assets/load_library.hpp"
 #include "core/error.hpp"
 #include "io/ontology_file.hpp"
+#include "io/sha256.hpp"
 
 namespace silva::app {
 
@@ -35,12 +37,7 @@ auto load_presets(const toml::table& file, const fs::path& lighting_toml, const 
 
 /// The preset lighting.time_of_day names with the weather lighting.weather names.
 render::LightingPreset selected_preset(const LoadedConfig& loaded, const fs::path& lighting_toml) {
-  toml::table file;
-  try {
-    file = toml::parse_file(lighting_toml.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(lighting_toml.string() + ": " + std::string(e.description()));
-  }
+  const toml::table file = read_lighting_file(lighting_toml.string());
   const auto presets =
       load_presets(file, lighting_toml, loaded, loaded.lighting_presets, "presets", parse_lighting_presets);
   const auto weathers =
@@ -87,10 +84,20 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   return setup;
 }
 
-std::string config_hash(const LoadedConfig& loaded) {
+std::string resumable_config_text(const LoadedConfig& loaded) {
   LoadedConfig copy = loaded;
   copy.config.output.dir.clear();
-  const std::string text = config_to_toml(copy);
+  return config_to_toml(copy);
+}
+
+std::string run_identity_hash(const LoadedConfig& loaded, const RunSetup& setup) {
+  std::string text = resumable_config_text(loaded);
+  // The contents of the files the frames depend on beyond the config: another library or an
+  // edited pose file is another run.
+  text += "\nasset_library " + io::sha256_file(setup.library_json);
+  const CapturesConfig& captures = loaded.config.captures;
+  if (std::find(captures.sequences.begin(), captures.sequences.end(), "custom") != captures.sequences.end())
+    text += "\nposes_file " + io::sha256_file(captures.poses_file);
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(text.data(), text.size(), 0)));
   return buf;

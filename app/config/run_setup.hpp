@@ -35,7 +35,11 @@ std::filesystem::path asset_library_path();
 /// builds the world context for `loaded`. Throws InputError naming the file at fault.
 RunSetup make_run_setup(const LoadedConfig& loaded);
 
-/// Hash of the resolved config without output.dir (marks a run folder's config), 16 hex digits.
-std::string config_hash(const LoadedConfig& loaded);
+/// The resolved config as TOML without output.dir: what the run marker records for `--resume`.
+std::string resumable_config_text(const LoadedConfig& loaded);
+
+/// The run's identity in its marker: a hash of the resolved config (without output.dir) and of the
+/// asset library and pose file contents; a run folder continues only a run with the same identity.
+std::string run_identity_hash(const LoadedConfig& loaded, const RunSetup& setup);
 
 }  // namespace silva::app

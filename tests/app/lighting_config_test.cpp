@@ -128,8 +128,10 @@ TEST(LightingConfig, OutOfRangeValueIsRejected) {
   EXPECT_EQ(error_of("[lighting.presets.day]\ncloud_cover = 1\n"), "");  // integers are numbers
 }
 
-TEST(LightingConfig, MissingFileIsAnIoError) {
-  EXPECT_THROW(load_lighting_presets("/nonexistent/lighting.toml"), IoError);
+TEST(LightingConfig, MissingFileOrFolderIsBadInput) {
+  // A data file that is missing or not a regular file is bad input (exit 2), like any input file.
+  EXPECT_THROW(load_lighting_presets("/nonexistent/lighting.toml"), InputError);
+  EXPECT_THROW(load_lighting_presets("/tmp"), InputError);
 }
 
 }  // namespace

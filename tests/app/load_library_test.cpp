@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
+#include <limits>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -204,6 +206,73 @@ TEST_F(LoadLibraryTest, CoreMaterialNamesKeepTheProceduralLook) {
   for (const Asset& a : loaded.assets)
     for (const Mesh& lod : a.lods())
       for (const MeshPart& p : lod.parts) EXPECT_EQ(p.base_color, nullptr) << a.name;
+}
+
+/// A one-asset library of `obj` (material "granite") with `collision`, in folder `name`.
+fs::path user_obj_library(const fs::path& root, const std::string& name, const std::string& obj,
+                          const std::string& collision = R"({"shape": "sphere", "center": [0, 0, 1], "radius": 1})") {
+  const fs::path d = root / name;
+  fs::create_directories(d);
+  std::ofstream(d / "a.obj") << "mtllib a.mtl\n" << obj;
+  std::ofstream(d / "a.mtl") << "newmtl granite\nKd 0.5 0.5 0.5\n";
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.obj", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": )" + collision + R"(, "lod_screen_sizes": []}]})";
+  return d / "library.json";
+}
+
+/// A binary glTF of one triangle with the given corner positions and material "granite".
+std::string triangle_glb(const std::array<float, 9>& corners) {
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"materials":[{"name":"granite"}],)"
+      R"("buffers":[{"byteLength":36}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]})";
+  std::string chunk = json + std::string((4 - json.size() % 4) % 4, ' ');
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string bin(reinterpret_cast<const char*>(corners.data()), 36);
+  return u32(0x46546C67) + u32(2) + u32(uint32_t(12 + 8 + chunk.size() + 8 + bin.size())) + u32(uint32_t(chunk.size())) +
+         u32(0x4E4F534A) + chunk + u32(uint32_t(bin.size())) + u32(0x004E4942) + bin;
+}
+
+TEST_F(LoadLibraryTest, CorruptUserAssetsNameFileAndField) {
+  const std::string tri = "usemtl granite\nf 1 2 3\n";
+  const fs::path nan_dir = *dir_ / "nan";
+  fs::create_directories(nan_dir);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::ofstream(nan_dir / "a.glb", std::ios::binary) << triangle_glb({0, 0, 0, 1, 0, 0, nan, 1, 0});
+  std::ofstream(nan_dir / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.glb", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  expect_error(nan_dir / "library.json", {"a.glb", "vertex 2", "finite"});
+  expect_error(user_obj_library(*dir_, "far", "v 0 0 0\nv 1 0 0\nv 1e30 1 0\n" + tri), {"a.obj", "vertex 2"});
+  expect_error(user_obj_library(*dir_, "box", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tri,
+                                R"({"shape": "box", "center": [0, 0, 0], "half_extents": [1e300, 1, 1]})"),
+               {"library.json", "collision.half_extents"});
+}
+
+TEST_F(LoadLibraryTest, HugeTextureIsRefusedBeforeDecoding) {
+  const fs::path d = *dir_ / "huge_texture";
+  fs::create_directories(d);
+  // A PNG header claiming 60000 x 60000 pixels: refused from the header, never allocated.
+  const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                  0, 0, 0xea, 0x60, 0, 0, 0xea, 0x60, 8, 6, 0, 0, 0};
+  std::ofstream(d / "big.png", std::ios::binary).write(reinterpret_cast<const char*>(header), sizeof header);
+  std::ofstream(d / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                "usemtl photo\nf 1/1 2/2 3/3\n";
+  std::ofstream(d / "a.mtl") << "newmtl photo\nKd 1 1 1\nmap_Kd big.png\n";
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.obj", "kind": "rock", "class": "obstacle", "parts": {"photo": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  expect_error(d / "library.json", {"a.obj", "big.png", "60000x60000"});
+}
+
+TEST_F(LoadLibraryTest, ManifestThatIsAFolderOrTooDeep) {
+  const fs::path folder = *dir_ / "folder";
+  fs::create_directories(folder / "library.json");
+  expect_error(folder / "library.json", {"library.json", "not a regular file"});
+  const fs::path deep = variant("deep", std::string(100000, '[') + std::string(100000, ']'));
+  expect_error(deep, {deep.string(), "nested deeper than 64"});
 }
 
 }  // namespace

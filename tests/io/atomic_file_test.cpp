@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
+#include <csignal>
+#include <fstream>
+#include <string>
+
 #include "core/error.hpp"
 #include "io_test_util.hpp"
 
@@ -40,19 +46,42 @@ TEST(AtomicFile, FailedRenameRemovesTempAndKeepsTarget) {
   EXPECT_TRUE(list_temp_files(dir).empty());
 }
 
-TEST(AtomicFile, DiskFullThrowsIoError) {
-  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
-  // The temp name is a link to /dev/full, whose every write fails with ENOSPC.
+TEST(AtomicFile, WriteFailureThrowsIoErrorAndLeavesNothing) {
+  // A file-size limit of 2 bytes makes the write fail (EFBIG) as a full disk would (ENOSPC).
   const auto dir = test::scratch_dir("atomic_full");
-  std::filesystem::create_symlink("/dev/full", temp_path_for(dir / "f.bin"));
+  rlimit old{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit tiny = old;
+  tiny.rlim_cur = 2;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &tiny), 0);
+  bool threw = false;
   try {
     write_file_atomic(dir / "f.bin", std::string_view("data"));
-    FAIL();
   } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
+    threw = true;
+    EXPECT_NE(std::string(e.what()).find((dir / "f.bin").string()), std::string::npos) << e.what();
   }
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_TRUE(threw);
   EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
   EXPECT_TRUE(list_temp_files(dir).empty());
+}
+
+TEST(AtomicFile, NeverWritesThroughAPlantedTempLink) {
+  const auto dir = test::scratch_dir("atomic_link");
+  std::ofstream(dir / "victim.txt") << "keep";
+  std::filesystem::create_symlink(dir / "victim.txt", temp_path_for(dir / "f.bin"));
+  write_file_atomic(dir / "f.bin", std::string_view("data"));
+  EXPECT_FALSE(std::filesystem::is_symlink(dir / "f.bin"));
+  std::ifstream victim(dir / "victim.txt");
+  std::string text;
+  victim >> text;
+  EXPECT_EQ(text, "keep");
+  std::ifstream written(dir / "f.bin");
+  written >> text;
+  EXPECT_EQ(text, "data");
 }
 
 TEST(AtomicFile, ListsAndRemovesLeftoverTempsRecursively) {

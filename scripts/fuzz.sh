@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer harness of a fuzz build folder for a set time from its seed corpus.
+# Usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]   (default: every target)
+# New interesting inputs go to BUILD_DIR/fuzz-corpus/<target>/ (the repository's corpus is only
+# read); a crash leaves its input in BUILD_DIR/crashes/<target>/ and makes the script exit 1.
+# One summary line per target: seconds run, executions, coverage, crashes.
+set -uo pipefail
+build=${1:?usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]}
+seconds=${2:?usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]}
+shift 2
+root=$(cd "$(dirname "$0")/.." && pwd)
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(config set pose_json pose_csv ontology lighting library gltf glb obj marker)
+failed=0
+for t in "${targets[@]}"; do
+  exe="$build/tests/fuzz/silva_fuzz_$t"
+  [ -x "$exe" ] || { echo "fuzz: $exe missing; build the fuzz_harnesses target first" >&2; exit 2; }
+  mkdir -p "$build/fuzz-corpus/$t" "$build/crashes/$t"
+  log="$build/crashes/$t.log"
+  start=$(date +%s)
+  ASAN_OPTIONS=detect_leaks=0 "$exe" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=30 \
+    -artifact_prefix="$build/crashes/$t/" "$build/fuzz-corpus/$t" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1
+  rc=$?
+  elapsed=$(( $(date +%s) - start ))
+  stats=$(grep -E '^(#[0-9]+|Done)' "$log" | tail -1)
+  crashes=$(find "$build/crashes/$t" -type f | wc -l)
+  echo "fuzz $t: ${elapsed} s, exit $rc, crashes $crashes, last: $stats"
+  [ "$rc" -ne 0 ] || [ "$crashes" -ne 0 ] && failed=1
+done
+exit $failed
