@@ -16,6 +16,7 @@ PKGS=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinygltf-dev
   libdeflate-dev libxxhash-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  python3-numpy python3-opencv
 )
 BENCH_PKGS=(
   libembree-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0

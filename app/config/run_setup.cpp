@@ -87,7 +87,11 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
 std::string config_hash(const LoadedConfig& loaded) {
   LoadedConfig copy = loaded;
   copy.config.output.dir.clear();
-  const std::string text = config_to_toml(copy);
+  // output.formats never changes a captured file: the hash leaves its line out, so a run keeps its
+  // hash whatever it exports and --resume may add or drop exports.
+  std::string text = config_to_toml(copy);
+  const size_t formats = text.find("\nformats = ");
+  if (formats != std::string::npos) text.erase(formats + 1, text.find('\n', formats + 1) - formats);
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(text.data(), text.size(), 0)));
   return buf;
