@@ -15,12 +15,12 @@ namespace {
 CardCounts count_frame(const Dataset& d, const DatasetFrame& f) {
   CardCounts c;
   if (d.has("semantic")) {
-    const cv::Mat semantic = read_image(d.file(f, "semantic", "png"));
+    const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
     c.pixels = uint64_t(semantic.total());
     for (auto it = semantic.begin<uint8_t>(); it != semantic.end<uint8_t>(); ++it) ++c.class_pixels[*it];
   }
   if (d.has("instance")) {
-    const cv::Mat instance = read_image(d.file(f, "instance", "png"));
+    const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
     const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
     std::vector<uint64_t> area(table.size() + 1, 0);
     for (auto it = instance.begin<uint16_t>(); it != instance.end<uint16_t>(); ++it)
@@ -32,7 +32,7 @@ CardCounts count_frame(const Dataset& d, const DatasetFrame& f) {
     }
   }
   if (d.has("depth")) {
-    const cv::Mat depth = read_image(d.file(f, "depth", "png"));
+    const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);
     for (auto it = depth.begin<uint16_t>(); it != depth.end<uint16_t>(); ++it) {
       if (*it == 0) ++c.depth_no_hit;
       else ++c.depth[std::min(CardCounts::kDepthBins - 1, int(*it / 2000))];
@@ -70,14 +70,14 @@ std::vector<uint8_t> bar_chart(const std::string& title, const std::vector<std::
                                const std::vector<double>& values, const std::vector<std::array<uint8_t, 3>>& colors,
                                int width, int height) {
   cv::Mat img(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
-  const int left = 50, right = 10, top = 30, bottom = 100;
+  const int left = 64, right = 10, top = 30, bottom = 100;
   cv::putText(img, title, {left, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0}, 1, cv::LINE_AA);
   const double peak = std::max(1e-12, *std::max_element(values.begin(), values.end()));
   const int n = int(values.size()), plot_w = width - left - right, plot_h = height - top - bottom;
   cv::line(img, {left, top + plot_h}, {width - right, top + plot_h}, {0, 0, 0});
   cv::line(img, {left, top}, {left, top + plot_h}, {0, 0, 0});
   char peak_text[32];
-  std::snprintf(peak_text, sizeof peak_text, "%.3g", peak);
+  std::snprintf(peak_text, sizeof peak_text, peak >= 100 ? "%.0f" : "%.3g", peak);
   cv::putText(img, peak_text, {2, top + 10}, cv::FONT_HERSHEY_SIMPLEX, 0.35, {0, 0, 0}, 1, cv::LINE_AA);
   for (int i = 0; i < n; ++i) {
     const int x0 = left + plot_w * i / n + 1, x1 = left + plot_w * (i + 1) / n - 1;
@@ -85,9 +85,12 @@ std::vector<uint8_t> bar_chart(const std::string& title, const std::vector<std::
     const auto& c = colors[size_t(i) % colors.size()];
     cv::rectangle(img, {x0, top + plot_h - bar}, {x1, top + plot_h}, cv::Scalar(c[0], c[1], c[2]), cv::FILLED);
     cv::rectangle(img, {x0, top + plot_h - bar}, {x1, top + plot_h}, {0, 0, 0});
-    // Labels written upwards under their bar.
+    // Labels written upwards under their bar, ending at the axis.
     cv::Mat text(16, bottom - 4, CV_8UC3, cv::Scalar(255, 255, 255));
-    cv::putText(text, labels[size_t(i)], {0, 12}, cv::FONT_HERSHEY_SIMPLEX, 0.35, {0, 0, 0}, 1, cv::LINE_AA);
+    int baseline = 0;
+    const int text_w = cv::getTextSize(labels[size_t(i)], cv::FONT_HERSHEY_SIMPLEX, 0.35, 1, &baseline).width;
+    cv::putText(text, labels[size_t(i)], {std::max(0, text.cols - 2 - text_w), 12}, cv::FONT_HERSHEY_SIMPLEX, 0.35,
+                {0, 0, 0}, 1, cv::LINE_AA);
     cv::Mat turned;
     cv::rotate(text, turned, cv::ROTATE_90_COUNTERCLOCKWISE);
     const int cx = std::clamp((x0 + x1) / 2 - 8, 0, width - 16);

@@ -67,11 +67,17 @@ Dataset open_dataset(const fs::path& dir) {
   return d;
 }
 
-cv::Mat read_image(const fs::path& path) {
+cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
   cv::Mat image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   if (image.empty()) throw InputError(path.string() + ": not a readable image");
+  if (image.type() != type)
+    throw InputError(path.string() + ": not a Silva image of this kind (" + std::to_string(image.channels()) +
+                     " channels of " + std::to_string(image.elemSize1() * 8) + " bits)");
+  if (!like.empty() && image.size() != like.size())
+    throw InputError(path.string() + ": " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                     ", not the frame's " + std::to_string(like.cols) + "x" + std::to_string(like.rows));
   return image;
 }
 
@@ -80,7 +86,8 @@ std::vector<InstanceEntry> read_instance_table(const fs::path& path) {
   const nlohmann::json j = parse_json_text(read_text_file(path), where);
   std::vector<InstanceEntry> entries;
   for (const nlohmann::json& e : json_member(j, "instances", where)) {
-    entries.push_back({uint16_t(json_int(e, "index", 1, 65535, where)),
+    const long long next = (long long)entries.size() + 1;
+    entries.push_back({uint16_t(json_int(e, "index", next, next, where)),
                        uint32_t(json_int(e, "instance_id", 1, UINT32_MAX, where)),
                        uint8_t(json_int(e, "class_id", 0, 255, where))});
   }

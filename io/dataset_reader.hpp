@@ -46,10 +46,12 @@ struct Dataset {
 Dataset open_dataset(const std::filesystem::path& dir);
 
 /// Reads an image with OpenCV (IMREAD_UNCHANGED: 8/16-bit grey as one channel, colour as BGR);
-/// InputError naming the file when it is missing or unreadable.
-cv::Mat read_image(const std::filesystem::path& path);
+/// InputError naming the file when it is missing, unreadable, not of OpenCV type `type` (e.g. CV_16UC1) or,
+/// when `like` is not empty, not of `like`'s size.
+cv::Mat read_image(const std::filesystem::path& path, int type, const cv::Mat& like = {});
 
-/// Reads instance/NNNNNN.json: the per-frame instance table (index, instance_id, class_id).
+/// Reads instance/NNNNNN.json: the per-frame instance table (index, instance_id, class_id); InputError
+/// unless the indices are 1, 2, ... in order (CONTRACT.md).
 std::vector<InstanceEntry> read_instance_table(const std::filesystem::path& path);
 
 /// Hard-links `to` to `from` (no copy, no extra space), copying when the two are on different file

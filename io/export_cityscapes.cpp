@@ -34,8 +34,8 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
   const std::string stem = city + "_" + f.stem();
   link_or_copy(d.file(f, "rgb", "png"), left / (stem + "_leftImg8bit.png"));
   link_or_copy(d.file(f, "semantic", "png"), gt / (stem + "_gtFine_labelIds.png"));
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"));
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"));
+  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
+  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
   const std::vector<uint16_t> ids = cityscapes_ids(read_instance_table(d.file(f, "instance", "json")),
                                                    d.file(f, "instance", "json"));
   const int w = semantic.cols, h = semantic.rows;

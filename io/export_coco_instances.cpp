@@ -9,7 +9,7 @@ namespace {
 
 /// The annotations of frame `f` (ids assigned later).
 std::vector<nlohmann::json> instance_annotations(const Dataset& d, const DatasetFrame& f, nlohmann::json& image) {
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"));
+  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
   const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
   const int n = int(table.size());
   std::vector<PixelBox> boxes(table.size());

@@ -14,8 +14,8 @@ namespace {
 /// Writes frame `f`'s panoptic PNG and returns its annotation.
 nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& out,
                               nlohmann::json& image) {
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"));
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"));
+  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
+  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
   const uint8_t void_id = d.ontology.id(Role::Background);
   bool has_instances[256] = {};
   for (int r = 0; r < kRoleCount; ++r)

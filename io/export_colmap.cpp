@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/export_formats.hpp"
 
@@ -35,8 +36,10 @@ struct DepthPoint {
 std::vector<DepthPoint> frame_points(const Dataset& d, const DatasetFrame& f, const Camera& cam) {
   std::vector<DepthPoint> p;
   if (!d.has("depth") || !d.has("rgb")) return p;
-  const cv::Mat depth = read_image(d.file(f, "depth", "png"));
-  const cv::Mat rgb = read_image(d.file(f, "rgb", "png"));
+  const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);
+  const cv::Mat rgb = read_image(d.file(f, "rgb", "png"), CV_8UC3, depth);
+  if (depth.cols != cam.width || depth.rows != cam.height)
+    throw InputError(d.file(f, "depth", "png").string() + ": not the size its camera file gives");
   const int stride = std::max(1, int(std::lround(std::sqrt(double(cam.width) * cam.height / 1000.0))));
   const Mat3d r = cam.camera_to_world.block<3, 3>(0, 0);
   const Vec3d c = cam.camera_to_world.block<3, 1>(0, 3);

@@ -18,7 +18,7 @@ nlohmann::json matrix_json(const Mat4d& m) {
 
 /// Mask of frame `f`: 255 where a surface was hit, 0 for the background class (sky).
 void write_mask(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& path) {
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"));
+  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
   const uint8_t sky = d.ontology.id(Role::Background);
   std::vector<uint8_t> mask(size_t(semantic.cols) * semantic.rows);
   for (int y = 0; y < semantic.rows; ++y)

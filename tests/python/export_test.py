@@ -279,7 +279,15 @@ def check_errors():
     r = silva("export", DATASET, "--format", "colmap", "--out", target, expect=2)
     assert "already exists; pass --overwrite" in r.stderr, r.stderr
     assert open(os.path.join(target, "colmap", "keep.txt")).read() == "mine"
-    print("errors: not a dataset, unknown format and an existing target each stop with one line, exit 2")
+    broken = os.path.join(WORK, "broken", f"{SEED:010d}")
+    shutil.rmtree(os.path.dirname(broken), ignore_errors=True)
+    shutil.copytree(DATASET, broken, ignore=shutil.ignore_patterns("export", "card"))
+    open(os.path.join(broken, "random", "instance", "000000.png"), "w").write("not a png")
+    r = silva("export", broken, "--format", "cityscapes", expect=2)
+    assert "instance/000000.png: not a readable image" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    assert not os.path.exists(os.path.join(broken, "export", "cityscapes"))
+    print("errors: not a dataset, unknown format, an existing target and a corrupt label image each stop with one "
+          "line, exit 2")
 
 
 CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,
