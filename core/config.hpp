@@ -14,6 +14,7 @@ struct OutputConfig {
   int height = 1080;                       ///< output.resolution (H)
   std::vector<std::string> types = {"rgb", "semantic", "semantic_color", "instance",
                                     "depth", "depth_exr", "normal"};  ///< output.types
+  std::vector<std::string> formats;        ///< output.formats: exports written after the run
 };
 
 /// Lighting selection (`[lighting]`); the presets themselves live in render::LightingPreset.

@@ -23,6 +23,7 @@ constexpr std::pair<const char*, Handler (*)(CLI::App&)> kCommands[] = {
     {"generate", add_generate_command}, {"world", add_world_command},
     {"validate", add_validate_command}, {"version", add_version_command},
     {"assets", add_assets_command},     {"merge", add_merge_command},
+    {"export", add_export_command},     {"card", add_card_command},
     {"bench", add_bench_command},       {"profile", add_profile_command},
     {"view", add_view_command},
 };

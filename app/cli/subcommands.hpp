@@ -21,6 +21,10 @@ Handler add_version_command(CLI::App& root);
 Handler add_assets_command(CLI::App& root);
 /// `silva merge` (app/commands/cmd_merge.cpp).
 Handler add_merge_command(CLI::App& root);
+/// `silva export` (app/commands/cmd_export.cpp).
+Handler add_export_command(CLI::App& root);
+/// `silva card` (app/commands/cmd_card.cpp).
+Handler add_card_command(CLI::App& root);
 /// `silva bench` (app/commands/cmd_bench.cpp).
 Handler add_bench_command(CLI::App& root);
 /// `silva view` (app/commands/cmd_view.cpp).

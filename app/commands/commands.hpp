@@ -10,6 +10,8 @@
 
 #include "app/cli/reporter.hpp"
 #include "app/config/config_loader.hpp"
+#include "io/dataset_reader.hpp"
+#include "io/export_formats.hpp"
 
 namespace silva::app {
 
@@ -66,6 +68,14 @@ struct MergeRequest {
   std::filesystem::path run_dir;  ///< <output.dir>/<seed>/, an existing folder.
 };
 
+/// `silva export DIR --format F...`: convert a finished dataset.
+struct ExportRequest {
+  std::filesystem::path run_dir;           ///< <output.dir>/<seed>/.
+  std::vector<io::ExportFormat> formats;   ///< In the order given.
+  std::filesystem::path out_dir;           ///< Each format goes to <out_dir>/<format>/.
+  bool overwrite = false;                  ///< --overwrite: replace an existing <out_dir>/<format>/.
+};
+
 /// `silva bench`: the end-to-end benchmark harness.
 struct BenchRequest {
   bool quick = false;                 ///< --quick: a short subset.
@@ -101,6 +111,18 @@ int run_assets_build(const AssetsBuildRequest& request, const Reporter& reporter
 int run_assets_sheet(const AssetsSheetRequest& request, const Reporter& reporter);
 /// Merges shards of a run; returns the exit code. Throws InputError / IoError.
 int run_merge(const MergeRequest& request, const Reporter& reporter);
+/// Exports a finished dataset; returns the exit code. Throws InputError / IoError.
+int run_export(const ExportRequest& request, const Reporter& reporter);
+/// Writes `formats` of `dataset` into <out_dir>/<format>/ (each moved into place when complete) and returns
+/// [{"format", "dir", "seconds"}, ...]. An existing non-empty target without `overwrite` is InputError,
+/// checked for every format before any is written.
+nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
+                              const std::filesystem::path& out_dir, bool overwrite);
+/// Writes <run_dir>/CARD.md, card.json and card/*.png for a finished dataset (also at the end of generate
+/// and merge). Throws InputError / IoError.
+void write_card(const std::filesystem::path& run_dir);
+/// `silva card`: write_card and report; returns the exit code. Throws InputError / IoError.
+int run_card(const std::filesystem::path& run_dir, const Reporter& reporter);
 /// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
 int run_bench(const BenchRequest& request, const Reporter& reporter);
 /// Serves the view until Ctrl-C (then throws Interrupted: exit 130). Throws InputError / IoError.

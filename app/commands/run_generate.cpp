@@ -161,6 +161,15 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   } else {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
+    if (!cfg.output.formats.empty()) {
+      std::vector<io::ExportFormat> formats;
+      for (const std::string& name : cfg.output.formats)
+        formats.push_back(io::parse_export_format(name, "output.formats"));
+      export_formats(io::open_dataset(run_dir), formats, run_dir / "export", /*overwrite=*/true);
+      reporter.note("silva: exported " + std::to_string(formats.size()) + " formats into " +
+                    (run_dir / "export").string());
+    }
+    write_card(run_dir);
   }
   report_summary(reporter, stats, record, cfg.seed, run_dir, skipped, plan.size());
   return 0;

@@ -22,6 +22,7 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
                              const std::map<std::string, int>& frames_per_sequence) {
   nlohmann::json config = config_to_json(loaded);
   config["output"].erase("dir");
+  config["output"].erase("formats");
   nlohmann::json frames = nlohmann::json::object();
   for (const auto& [sequence, n] : frames_per_sequence) frames[sequence] = n;
   nlohmann::json manifest = {

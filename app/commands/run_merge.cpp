@@ -74,6 +74,7 @@ int merge_shards(const MergeRequest& request, const Reporter& reporter) {
   run["slowest_shard_wall_s"] = wall;
   io::write_file_atomic(dir / "run.json", run.dump(2) + "\n");
   io::write_file_atomic(dir / "manifest.json", manifest.dump(2) + "\n");
+  write_card(dir);
   reporter.result({{"ok", true}, {"run_dir", dir.string()}, {"shards", count}, {"frames", frames}},
                   "merged " + std::to_string(count) + " shards, " + std::to_string(frames) + " frames, into " +
                       (dir / "manifest.json").string());

@@ -20,6 +20,8 @@ std::vector<ConfigKey> build_schema() {
   const std::vector<std::string_view> output_types = {
       "rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr", "normal",
       "depth_preview", "lidar"};
+  const std::vector<std::string_view> export_formats = {"coco-panoptic", "coco-instances", "cityscapes",
+                                                        "colmap", "nerfstudio"};
   const std::vector<std::string_view> sequences = {"autopilot", "random", "custom"};
   using T = ValueType;
   return {
@@ -31,6 +33,9 @@ std::vector<ConfigKey> build_schema() {
        [](Config& c) -> FieldRef { return ResolutionRef{&c.output.width, &c.output.height}; }},
       {"output.types", T::StringList, "images written per capture", {}, output_types,
        [](Config& c) -> FieldRef { return &c.output.types; }},
+      {"output.formats", T::StringList,
+       "formats exported into <dir>/<seed>/export/<format>/ when a run completes (as silva export)", {},
+       export_formats, [](Config& c) -> FieldRef { return &c.output.formats; }},
       {"lighting.time_of_day", T::String,
        "lighting preset: day, dusk, night or a [lighting.presets.<name>] of this config", {}, {},
        [](Config& c) -> FieldRef { return &c.lighting.time_of_day; }},

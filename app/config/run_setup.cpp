@@ -92,6 +92,10 @@ std::string resumable_config_text(const LoadedConfig& loaded) {
 
 std::string run_identity_hash(const LoadedConfig& loaded, const RunSetup& setup) {
   std::string text = resumable_config_text(loaded);
+  // output.formats never changes a captured file: the hash leaves its line out, so a run keeps its
+  // hash whatever it exports and --resume may add or drop exports.
+  const size_t formats = text.find("\nformats = ");
+  if (formats != std::string::npos) text.erase(formats + 1, text.find('\n', formats + 1) - formats);
   // The contents of the files the frames depend on beyond the config: another library or an
   // edited pose file is another run.
   text += "\nasset_library " + io::sha256_file(setup.library_json);

@@ -1,0 +1,118 @@
+#include "io/dataset_reader.hpp"
+
+#include <cstdio>
+#include <system_error>
+
+#include <opencv2/imgcodecs.hpp>
+#include <tbb/parallel_for.h>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/capture_set.hpp"
+#include "io/json_read.hpp"
+#include "io/ontology_file.hpp"
+#include "io/run_folder.hpp"
+
+namespace silva::io {
+
+namespace fs = std::filesystem;
+
+std::string DatasetFrame::stem() const {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "_%06d", frame);
+  return sequence + buf;
+}
+
+bool Dataset::has(const std::string& type) const {
+  return std::find(types.begin(), types.end(), type) != types.end();
+}
+
+fs::path Dataset::file(const DatasetFrame& f, const std::string& folder, const std::string& ext) const {
+  return dir / f.sequence / frame_file(folder, f.frame, ext);
+}
+
+void Dataset::require(const std::string& type, const std::string& what) const {
+  if (!has(type))
+    throw InputError(dir.string() + ": " + what + " needs output type '" + type +
+                     "', which this dataset's output.types does not hold");
+}
+
+Dataset open_dataset(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError(dir.string() + ": not a Silva dataset folder (expected <output.dir>/<seed>/)");
+  if (!read_run_marker(dir))
+    throw InputError(dir.string() + ": not a Silva dataset (no .silva-run.json; expected <output.dir>/<seed>/)");
+  if (!fs::exists(dir / "manifest.json", ec))
+    throw InputError(dir.string() + ": not a finished Silva dataset (no manifest.json: finish it with "
+                     "generate --resume, or silva merge for shards)");
+  Dataset d;
+  d.dir = dir;
+  const std::string where = (dir / "manifest.json").string();
+  d.manifest = parse_json_text(read_text_file(dir / "manifest.json"), where);
+  try {
+    d.seed = d.manifest.at("seed").get<int64_t>();
+    d.types = d.manifest.at("config").at("output").at("types").get<std::vector<std::string>>();
+    const auto sequences = d.manifest.at("config").at("captures").at("sequences").get<std::vector<std::string>>();
+    const nlohmann::json& counts = d.manifest.at("frames");
+    int global = 0;
+    for (const std::string& s : sequences) {
+      const int n = counts.contains(s) ? counts.at(s).get<int>() : 0;
+      for (int f = 0; f < n; ++f) d.frames.push_back({s, f, global++});
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + ": not a Silva manifest (" + std::string(e.what()) + ")");
+  }
+  d.ontology = load_ontology(dir / "ontology.json");
+  return d;
+}
+
+cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
+  cv::Mat image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  if (image.empty()) throw InputError(path.string() + ": not a readable image");
+  if (image.type() != type)
+    throw InputError(path.string() + ": not a Silva image of this kind (" + std::to_string(image.channels()) +
+                     " channels of " + std::to_string(image.elemSize1() * 8) + " bits)");
+  if (!like.empty() && image.size() != like.size())
+    throw InputError(path.string() + ": " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                     ", not the frame's " + std::to_string(like.cols) + "x" + std::to_string(like.rows));
+  return image;
+}
+
+std::vector<InstanceEntry> read_instance_table(const fs::path& path) {
+  const std::string where = path.string();
+  const nlohmann::json j = parse_json_text(read_text_file(path), where);
+  std::vector<InstanceEntry> entries;
+  for (const nlohmann::json& e : json_member(j, "instances", where)) {
+    const long long next = (long long)entries.size() + 1;
+    entries.push_back({uint16_t(json_int(e, "index", next, next, where)),
+                       uint32_t(json_int(e, "instance_id", 1, UINT32_MAX, where)),
+                       uint8_t(json_int(e, "class_id", 0, 255, where))});
+  }
+  return entries;
+}
+
+void link_or_copy(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::create_hard_link(from, to, ec);
+  if (!ec) return;
+  ec.clear();
+  fs::copy_file(from, to, ec);
+  if (ec) throw IoError("cannot link or copy " + from.string() + " to " + to.string() + ": " + ec.message());
+}
+
+void write_json(const fs::path& path, const nlohmann::json& json) { write_file_atomic(path, json.dump() + "\n"); }
+
+void create_folder(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw IoError("cannot create folder " + dir.string() + ": " + ec.message());
+}
+
+void for_each_frame(const Dataset& dataset, const std::function<void(size_t)>& fn) {
+  tbb::parallel_for(size_t(0), dataset.frames.size(), [&](size_t i) { fn(i); });
+}
+
+}  // namespace silva::io

@@ -1,0 +1,71 @@
+#pragma once
+/// @file Reads a finished Silva dataset (CONTRACT.md "Dataset layout") for the exporters and the card:
+/// its manifest, ontology, frame list and per-frame files.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+
+#include "core/ontology.hpp"
+#include "io/camera_json.hpp"
+#include "io/label_images.hpp"
+
+namespace silva::io {
+
+/// One captured frame of a dataset.
+struct DatasetFrame {
+  std::string sequence;  ///< "autopilot", "random" or "custom".
+  int frame = 0;         ///< Frame number within the sequence.
+  int global_index = 0;  ///< Sequences in config order, then frame number, from 0 (CONTRACT.md --shard).
+  /// "<sequence>_<frame as %06d>", the file stem the exports use.
+  std::string stem() const;
+};
+
+/// A finished dataset folder <output.dir>/<seed>/ (it has manifest.json).
+struct Dataset {
+  std::filesystem::path dir;        ///< The run folder.
+  int64_t seed = 0;                 ///< From the manifest.
+  nlohmann::json manifest;          ///< manifest.json as written by generate.
+  Ontology ontology;                ///< The dataset's ontology.json.
+  std::vector<std::string> types;   ///< output.types of the run.
+  std::vector<DatasetFrame> frames; ///< Every frame, in global order.
+  /// True when the run wrote output type `type` (e.g. "semantic").
+  bool has(const std::string& type) const;
+  /// Path of frame `f`'s file in `folder` with extension `ext`, e.g. file(f, "rgb", "png").
+  std::filesystem::path file(const DatasetFrame& f, const std::string& folder, const std::string& ext) const;
+  /// InputError "<dir>: <what> needs output type '<type>' ..." unless the run wrote `type`.
+  void require(const std::string& type, const std::string& what) const;
+};
+
+/// Opens a finished dataset: InputError naming the folder when it is not one (no .silva-run.json,
+/// no manifest.json, or a malformed manifest/ontology).
+Dataset open_dataset(const std::filesystem::path& dir);
+
+/// Reads an image with OpenCV (IMREAD_UNCHANGED: 8/16-bit grey as one channel, colour as BGR);
+/// InputError naming the file when it is missing, unreadable, not of OpenCV type `type` (e.g. CV_16UC1) or,
+/// when `like` is not empty, not of `like`'s size.
+cv::Mat read_image(const std::filesystem::path& path, int type, const cv::Mat& like = {});
+
+/// Reads instance/NNNNNN.json: the per-frame instance table (index, instance_id, class_id); InputError
+/// unless the indices are 1, 2, ... in order (CONTRACT.md).
+std::vector<InstanceEntry> read_instance_table(const std::filesystem::path& path);
+
+/// Hard-links `to` to `from` (no copy, no extra space), copying when the two are on different file
+/// systems; replaces nothing (IoError when `to` exists or cannot be written).
+void link_or_copy(const std::filesystem::path& from, const std::filesystem::path& to);
+
+/// Writes `json` to `path` atomically, compact, one final newline (IoError on failure).
+void write_json(const std::filesystem::path& path, const nlohmann::json& json);
+
+/// Creates `dir` and its parents; IoError naming it when that fails.
+void create_folder(const std::filesystem::path& dir);
+
+/// Calls `fn(i)` for every frame index i of `dataset`, in parallel on the caller's TBB arena; the first
+/// exception thrown is rethrown.
+void for_each_frame(const Dataset& dataset, const std::function<void(size_t)>& fn);
+
+}  // namespace silva::io

@@ -1,0 +1,41 @@
+#pragma once
+/// @file The formats `silva export` converts a finished dataset into (CONTRACT.md "Export formats"),
+/// one source file per format. Each exporter writes into an existing empty folder, reads the dataset's
+/// files only (nothing is rendered again), works on frames in parallel on the caller's TBB arena and
+/// writes the same bytes for any thread count. Source images are hard-linked (copied across file systems).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/dataset_reader.hpp"
+
+namespace silva::io {
+
+/// An export format.
+enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio };
+
+/// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio.
+const std::vector<std::string>& export_format_names();
+
+/// The name of `format`.
+const std::string& export_format_name(ExportFormat format);
+
+/// Parses a format name; InputError "<where>: unknown format 'x' (allowed: ...)" otherwise.
+ExportFormat parse_export_format(const std::string& name, const std::string& where);
+
+/// Writes `dataset` as `format` into the empty folder `out`. InputError when the dataset lacks an output
+/// type the format needs; IoError when a file cannot be written.
+void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out);
+
+/// COCO panoptic: images/, panoptic/<stem>.png (segment id = R + 256 G + 65536 B) and panoptic.json.
+void export_coco_panoptic(const Dataset& dataset, const std::filesystem::path& out);
+/// COCO instances (detection): images/ and instances.json with compressed RLE masks, bboxes and areas.
+void export_coco_instances(const Dataset& dataset, const std::filesystem::path& out);
+/// Cityscapes: leftImg8bit/train/<seed>/ and gtFine/train/<seed>/ (labelIds, instanceIds, color).
+void export_cityscapes(const Dataset& dataset, const std::filesystem::path& out);
+/// COLMAP text model: sparse/0/{cameras,images,points3D}.txt and images/.
+void export_colmap(const Dataset& dataset, const std::filesystem::path& out);
+/// nerfstudio / instant-ngp / 3DGS: transforms.json (OpenGL camera axes), images/, depth/, masks/.
+void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out);
+
+}  // namespace silva::io

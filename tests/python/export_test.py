@@ -1,0 +1,296 @@
+#!/usr/bin/python3
+"""`silva export` read back by independent readers and compared pixel for pixel / pose for pose with the source.
+
+Usage: export_test.py SILVA WORKDIR TEST   (TEST: generate, coco-panoptic, coco-instances, cityscapes, colmap,
+nerfstudio, errors). `generate` makes the small dataset the others read (a ctest fixture).
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
+import cv2  # noqa: E402
+import numpy as np  # noqa: E402
+
+SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
+SEED = 4242
+DATASET = os.path.join(WORK, "dataset", f"{SEED:010d}")
+EXPORT = os.path.join(WORK, "export")
+
+
+def silva(*args, expect=0):
+    result = subprocess.run([SILVA, *args], capture_output=True, text=True)
+    if result.returncode != expect:
+        sys.exit(f"silva {' '.join(args)}: exit {result.returncode}, expected {expect}\n{result.stderr}")
+    return result
+
+
+def generate():
+    shutil.rmtree(WORK, ignore_errors=True)
+    silva("generate", "--seed", str(SEED), "--out", os.path.join(WORK, "dataset"), "--quiet",
+          "--set", "output.resolution=96x64", "--set", "captures.autopilot_points=2",
+          "--set", "captures.autopilot_yaws=[0.0]", "--set", "captures.random_count=1",
+          "--set", 'output.types=["rgb","semantic","semantic_color","instance","depth","depth_exr","normal"]',
+          "--set", 'output.formats=["nerfstudio"]')
+
+
+def frames():
+    manifest = json.load(open(os.path.join(DATASET, "manifest.json")))
+    out = []
+    for sequence in manifest["config"]["captures"]["sequences"]:
+        for frame in range(manifest["frames"].get(sequence, 0)):
+            out.append((sequence, frame))
+    return out
+
+
+def source(sequence, frame, folder, ext):
+    return os.path.join(DATASET, sequence, folder, f"{frame:06d}.{ext}")
+
+
+def read(path):
+    image = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+    assert image is not None, f"{path}: unreadable"
+    return image
+
+
+def export(fmt):
+    target = os.path.join(EXPORT, fmt)
+    silva("export", DATASET, "--format", fmt, "--out", EXPORT, "--overwrite", "--quiet")
+    return target
+
+
+def camera(sequence, frame):
+    cam = json.load(open(source(sequence, frame, "camera", "json")))
+    return np.array(cam["K"]), np.array(cam["camera_to_world"])
+
+
+def things():
+    ontology = json.load(open(os.path.join(DATASET, "ontology.json")))["classes"]
+    return {c["id"] for c in ontology if c["role"] in ("tree_trunk", "dead_tree", "stump", "shrub", "obstacle")}
+
+
+def check_coco_panoptic():
+    out = export("coco-panoptic")
+    doc = json.load(open(os.path.join(out, "panoptic.json")))
+    cats = {c["id"]: c for c in doc["categories"]}
+    assert {c for c, v in cats.items() if v["isthing"]} == things()
+    assert len(doc["annotations"]) == len(frames())
+    segments = 0
+    for (sequence, frame), ann, img in zip(frames(), doc["annotations"], doc["images"]):
+        assert ann["image_id"] == img["id"]
+        rgb = cv2.cvtColor(read(os.path.join(out, "panoptic", ann["file_name"])), cv2.COLOR_BGR2RGB).astype(np.int64)
+        ids = rgb[..., 0] + 256 * rgb[..., 1] + 65536 * rgb[..., 2]
+        semantic = read(source(sequence, frame, "semantic", "png")).astype(np.int64)
+        instance = read(source(sequence, frame, "instance", "png")).astype(np.int64)
+        expected = np.where(semantic == 0, 0, instance * 256 + semantic)
+        assert np.array_equal(ids, expected), f"{sequence}/{frame}: panoptic ids differ from the source labels"
+        assert sorted(s["id"] for s in ann["segments_info"]) == sorted(set(np.unique(ids)) - {0})
+        for s in ann["segments_info"]:
+            ys, xs = np.nonzero(ids == s["id"])
+            assert s["area"] == len(xs)
+            assert s["bbox"] == [xs.min(), ys.min(), xs.max() - xs.min() + 1, ys.max() - ys.min() + 1]
+            assert s["category_id"] == s["id"] % 256 and s["category_id"] in cats
+            segments += 1
+        assert os.path.samefile(os.path.join(out, "images", img["file_name"]), source(sequence, frame, "rgb", "png"))
+    print(f"coco-panoptic: {segments} segments in {len(frames())} frames equal the source labels")
+
+
+def rle_decode(counts, h, w):
+    """COCO compressed RLE string -> mask, written from the format's description (independent of Silva)."""
+    runs, p = [], 0
+    while p < len(counts):
+        x, k, more = 0, 0, True
+        while more:
+            c = ord(counts[p]) - 48
+            x |= (c & 0x1F) << (5 * k)
+            more = bool(c & 0x20)
+            p += 1
+            k += 1
+            if not more and c & 0x10:
+                x |= -1 << (5 * k)
+        if len(runs) > 2:
+            x += runs[-2]
+        runs.append(x)
+    flat = np.zeros(h * w, dtype=np.uint8)
+    pos = 0
+    for i, n in enumerate(runs):
+        if i % 2:
+            flat[pos:pos + n] = 1
+        pos += n
+    assert pos == h * w, "RLE counts do not cover the image"
+    return flat.reshape(w, h).T
+
+
+def check_coco_instances():
+    out = export("coco-instances")
+    path = os.path.join(out, "instances.json")
+    doc = json.load(open(path))
+    try:
+        from pycocotools.coco import COCO
+        coco = COCO(path)
+        decode = coco.annToMask
+        print("coco-instances: masks decoded by pycocotools")
+    except ImportError:
+        coco = None
+        print("coco-instances: SKIP the pycocotools read-back (pycocotools is not importable; Debian bookworm has "
+              "no python3-pycocotools); masks decoded by the test's own RLE decoder")
+
+        def decode(a):
+            return rle_decode(a["segmentation"]["counts"], *a["segmentation"]["size"])
+    by_image = {}
+    for a in doc["annotations"]:
+        by_image.setdefault(a["image_id"], []).append(a)
+    count = 0
+    for (sequence, frame), img in zip(frames(), doc["images"]):
+        instance = read(source(sequence, frame, "instance", "png"))
+        table = json.load(open(source(sequence, frame, "instance", "json")))["instances"]
+        anns = by_image.get(img["id"], [])
+        present = [e for e in table if (instance == e["index"]).any()]
+        assert len(anns) == len(present)
+        for a, e in zip(anns, present):
+            mask = decode(a)
+            assert np.array_equal(mask.astype(bool), instance == e["index"]), f"{sequence}/{frame}: mask differs"
+            ys, xs = np.nonzero(mask)
+            assert a["area"] == len(xs) and a["category_id"] == e["class_id"] and a["instance_id"] == e["instance_id"]
+            assert a["bbox"] == [xs.min(), ys.min(), xs.max() - xs.min() + 1, ys.max() - ys.min() + 1]
+            count += 1
+    assert count > 0, "the test dataset shows no instance"
+    print(f"coco-instances: {count} instance masks equal the source instance images")
+
+
+def check_cityscapes():
+    out = export("cityscapes")
+    city = f"{SEED:010d}"
+    for sequence, frame in frames():
+        stem = os.path.join(out, "gtFine", "train", city, f"{city}_{sequence}_{frame:06d}_gtFine_")
+        semantic = read(source(sequence, frame, "semantic", "png")).astype(np.int64)
+        instance = read(source(sequence, frame, "instance", "png")).astype(np.int64)
+        labels = read(stem + "labelIds.png").astype(np.int64)
+        ids = read(stem + "instanceIds.png").astype(np.int64)
+        assert ids.dtype == np.int64 and np.array_equal(labels, semantic)
+        cls = np.where(ids >= 1000, ids // 1000, ids)
+        assert np.array_equal(cls, semantic), "instanceIds // 1000 is not the class"
+        assert np.array_equal(ids >= 1000, instance > 0), "instance pixels and Cityscapes instance pixels differ"
+        # The same partition into instances: a one-to-one map between source indices and Cityscapes ids.
+        pairs = set(zip(instance[instance > 0].tolist(), ids[instance > 0].tolist()))
+        assert len({a for a, _ in pairs}) == len(pairs) == len({b for _, b in pairs})
+        color = cv2.cvtColor(read(stem + "color.png"), cv2.COLOR_BGR2RGB)
+        assert np.array_equal(color, cv2.cvtColor(read(source(sequence, frame, "semantic_color", "png")),
+                                                  cv2.COLOR_BGR2RGB))
+        assert os.path.isfile(os.path.join(out, "leftImg8bit", "train", city,
+                                           f"{city}_{sequence}_{frame:06d}_leftImg8bit.png"))
+    print(f"cityscapes: {len(frames())} frames, labelIds and instanceIds (class*1000+k) equal the source labels")
+
+
+def quaternion_to_matrix(w, x, y, z):
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def check_colmap():
+    out = export("colmap")
+    model = os.path.join(out, "sparse", "0")
+    if shutil.which("colmap"):
+        binary, text = os.path.join(WORK, "colmap-bin"), os.path.join(WORK, "colmap-txt")
+        for folder in (binary, text):
+            shutil.rmtree(folder, ignore_errors=True)
+            os.makedirs(folder)
+        for src, dst, kind in ((model, binary, "BIN"), (binary, text, "TXT")):
+            r = subprocess.run(["colmap", "model_converter", "--input_path", src, "--output_path", dst,
+                                "--output_type", kind], capture_output=True, text=True)
+            assert r.returncode == 0, f"colmap model_converter failed: {r.stderr[-2000:]}"
+        model = text
+        print("colmap: read back through colmap model_converter (TXT -> BIN -> TXT)")
+    else:
+        print("colmap: SKIP the colmap read-back (no colmap binary; apt-get install colmap); parsing Silva's text")
+    cams = {}
+    for line in open(os.path.join(model, "cameras.txt")):
+        if line.startswith("#") or not line.strip():
+            continue
+        f = line.split()
+        assert f[1] == "PINHOLE"
+        cams[int(f[0])] = np.array([[float(f[4]), 0, float(f[6])], [0, float(f[5]), float(f[7])], [0, 0, 1]])
+    lines = [l for l in open(os.path.join(model, "images.txt")) if not l.startswith("#")]
+    images = {}
+    for head, pts in zip(lines[0::2], lines[1::2]):
+        f = head.split()
+        images[f[9]] = (int(f[0]), quaternion_to_matrix(*map(float, f[1:5])), np.array(list(map(float, f[5:8]))),
+                        cams[int(f[8])], pts.split())
+    assert len(images) == len(frames())
+    points = {}
+    for line in open(os.path.join(model, "points3D.txt")):
+        if not line.startswith("#") and line.strip():
+            f = line.split()
+            points[int(f[0])] = np.array(list(map(float, f[1:4])))
+    checked = 0
+    for sequence, frame in frames():
+        image_id, r, t, k, pts = images[f"{sequence}_{frame:06d}.png"]
+        k_src, c2w = camera(sequence, frame)
+        assert np.allclose(k, k_src, atol=1e-9)
+        assert np.allclose(r, c2w[:3, :3].T, atol=1e-9) and np.allclose(t, -c2w[:3, :3].T @ c2w[:3, 3], atol=1e-6)
+        depth = read(source(sequence, frame, "depth", "png"))
+        for u, v, pid in zip(pts[0::3], pts[1::3], pts[2::3]):
+            x_cam = r @ points[int(pid)] + t
+            uv = k @ (x_cam / x_cam[2])
+            assert abs(uv[0] - float(u)) < 1e-3 and abs(uv[1] - float(v)) < 1e-3
+            assert abs(x_cam[2] - depth[int(float(v))][int(float(u))] / 1000.0) < 1e-5
+            checked += 1
+    assert checked > 0
+    print(f"colmap: {len(images)} poses equal the camera files; {checked} points project to their pixel and depth")
+
+
+def check_nerfstudio():
+    during_run = open(os.path.join(DATASET, "export", "nerfstudio", "transforms.json")).read()
+    out = export("nerfstudio")
+    assert open(os.path.join(out, "transforms.json")).read() == during_run, "output.formats differs from export"
+    doc = json.load(open(os.path.join(out, "transforms.json")))
+    assert doc["camera_model"] == "OPENCV" and len(doc["frames"]) == len(frames())
+    checked = 0
+    for (sequence, frame), f in zip(frames(), doc["frames"]):
+        k, c2w = camera(sequence, frame)
+        gl = np.array(f["transform_matrix"])
+        depth = read(os.path.join(out, f["depth_file_path"])).astype(np.float64) / 1000.0
+        mask = read(os.path.join(out, f["mask_path"]))
+        semantic = read(source(sequence, frame, "semantic", "png"))
+        assert np.array_equal(mask == 0, semantic == 0)
+        for v, u in zip(*np.nonzero((depth > 0) & (depth < 65.0))):
+            z = depth[v, u]
+            # nerfstudio: ray direction ((u + 0.5 - cx) / fx, -(v + 0.5 - cy) / fy, -1) in OpenGL camera axes.
+            d_gl = np.array([(u + 0.5 - f["cx"]) / f["fl_x"], -(v + 0.5 - f["cy"]) / f["fl_y"], -1.0])
+            p_gl = gl[:3, :3] @ (z * d_gl) + gl[:3, 3]
+            p_cv = c2w[:3, :3] @ (z * np.linalg.inv(k) @ np.array([u + 0.5, v + 0.5, 1.0])) + c2w[:3, 3]
+            assert np.allclose(p_gl, p_cv, atol=1e-9), f"{sequence}/{frame} pixel {u},{v}: {p_gl} != {p_cv}"
+            checked += 1
+    assert checked > 0
+    print(f"nerfstudio: {checked} depth pixels reproject through the OpenGL poses onto the contract's poses")
+
+
+def check_errors():
+    r = silva("export", WORK, "--format", "colmap", expect=2)
+    assert "not a Silva dataset" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    r = silva("export", DATASET, "--format", "kitti", expect=2)
+    assert "unknown format 'kitti'" in r.stderr and "coco-panoptic" in r.stderr, r.stderr
+    target = os.path.join(WORK, "taken")
+    os.makedirs(os.path.join(target, "colmap"), exist_ok=True)
+    open(os.path.join(target, "colmap", "keep.txt"), "w").write("mine")
+    r = silva("export", DATASET, "--format", "colmap", "--out", target, expect=2)
+    assert "already exists; pass --overwrite" in r.stderr, r.stderr
+    assert open(os.path.join(target, "colmap", "keep.txt")).read() == "mine"
+    broken = os.path.join(WORK, "broken", f"{SEED:010d}")
+    shutil.rmtree(os.path.dirname(broken), ignore_errors=True)
+    shutil.copytree(DATASET, broken, ignore=shutil.ignore_patterns("export", "card"))
+    open(os.path.join(broken, "random", "instance", "000000.png"), "w").write("not a png")
+    r = silva("export", broken, "--format", "cityscapes", expect=2)
+    assert "instance/000000.png: not a readable image" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    assert not os.path.exists(os.path.join(broken, "export", "cityscapes"))
+    print("errors: not a dataset, unknown format, an existing target and a corrupt label image each stop with one "
+          "line, exit 2")
+
+
+CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,
+          "cityscapes": check_cityscapes, "colmap": check_colmap, "nerfstudio": check_nerfstudio,
+          "errors": check_errors}
+CHECKS[TEST]()
