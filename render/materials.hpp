@@ -47,13 +47,38 @@ inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< B
 ///   out = c (1 + (0.6 fbm2(4 p, 2, fine) - 0.3) (1 - smoothstep(0.1, 0.4, footprint)))
 ///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
 /// with shading_noise.hpp's noise evaluated lane by lane in its operation order (every target agrees).
+/// `slope` (may be null) receives the gradient (d/dx, d/dy, metres per metre) of the floor's relief
+///   height = (kGroundLeafRelief leaf + kGroundSpeckleRelief speckle) fine_detail
+/// (analytic derivatives of the same two value noises; fine_detail taken as constant).
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil = nullptr);
+                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr);
+
+/// Relief height of the forest floor per unit of its leaf-sized noise (metres): leaves lying on each other.
+inline constexpr float kGroundLeafRelief = 0.012f;
+/// Relief height per unit of the floor's speckle noise (metres): twigs, needles, grit.
+inline constexpr float kGroundSpeckleRelief = 0.004f;
 
 /// The Highway target ground_albedo_row dispatches to now.
 int64_t ground_simd_target();
 
-/// 1 for thin foliage that lets light through when back-lit (needles, leaves, grass, ferns), else 0.
-float material_translucency(Material m);
+/// How a material reflects and transmits light beyond its diffuse albedo.
+struct MaterialResponse {
+  float roughness;     ///< Perceptual GGX roughness in (0, 1] (the GGX alpha is its square).
+  float f0;            ///< Specular reflectance at normal incidence (0.04: most dielectrics).
+  float translucency;  ///< Fraction of the light a back-lit thin card lets through (0: opaque).
+};
+
+/// The response of material `m` (a fixed table: waxy leaves are smoother than bark, bark than litter).
+MaterialResponse material_response(Material m);
+
+/// The shading normal of a surface point with the relief of its material: bark, rock and wood are
+/// bumped by the gradient of the same value noise that grains their albedo, faded out where one
+/// pixel (`footprint` metres) covers more than about a third of the noise's period. Other
+/// materials return s.normal. Labels and the `normals` output keep the geometric normal.
+Vec3f material_shading_normal(const SurfacePoint& s, float footprint);
+
+/// `n` tilted by a height field's gradient `slope` (metres per metre) and renormalised: the
+/// gradient's part along n is dropped, the rest subtracted.
+Vec3f bumped_normal(const Vec3f& n, const Vec3f& slope);
 
 }  // namespace silva::render
