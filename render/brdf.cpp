@@ -32,13 +32,16 @@ float schlick_fresnel(float f0, float cos_theta) {
 float ggx_specular(const Vec3f& n, const Vec3f& to_eye, const Vec3f& to_light, float roughness, float f0) {
   const float n_dot_l = n.dot(to_light), n_dot_v = n.dot(to_eye);
   if (n_dot_l <= 0.0f || n_dot_v <= 0.0f) return 0.0f;
-  const Vec3f half = to_eye + to_light;
-  const float len2 = half.dot(half);
-  if (len2 <= 0.0f) return 0.0f;
-  const float inv_len = 1.0f / std::sqrt(len2);
-  const float n_dot_h = n.dot(half) * inv_len, v_dot_h = to_eye.dot(half) * inv_len;
-  const float alpha = std::max(roughness * roughness, kMinSunAlpha);
-  return ggx_distribution(n_dot_h, alpha) * smith_visibility(n_dot_l, n_dot_v, alpha) * schlick_fresnel(f0, v_dot_h);
+  // With the half vector h = (v + l) / |v + l|: |v + l|² = 2 + 2 v·l, v·h = sqrt((1 + v·l) / 2) and
+  // (n·h)² = (n·v + n·l)² / (2 + 2 v·l); D and V share one division.
+  const float one_plus_vl = std::max(1.0f + to_eye.dot(to_light), 1e-6f);
+  const float n_dot_h_sum = n_dot_v + n_dot_l;
+  const float alpha = std::max(roughness * roughness, kMinSunAlpha), a2 = alpha * alpha;
+  const float d = n_dot_h_sum * n_dot_h_sum * (a2 - 1.0f) + 2.0f * one_plus_vl;  // (n·h)² (α² - 1) + 1, times |v + l|²
+  const float smith = 2.0f * n_dot_l * n_dot_v * (1.0f - alpha) + (n_dot_l + n_dot_v) * alpha;
+  // D V = α² / (π ((n·h)² (α² - 1) + 1)²) · 0.5 / smith, with the |v + l|² factors of d restored.
+  const float dv = a2 * (0.5f * kInvPi) * (4.0f * one_plus_vl * one_plus_vl) / (d * d * smith);
+  return dv * schlick_fresnel(f0, std::sqrt(0.5f * one_plus_vl));
 }
 
 float ambient_specular_weight(float n_dot_v, float roughness, float f0) {
@@ -50,7 +53,7 @@ float ambient_specular_weight(float n_dot_v, float roughness, float f0) {
 }
 
 float forest_sky_view(float z) {
-  const float t = std::clamp((z - 0.05f) / 0.65f, 0.0f, 1.0f);
+  const float t = std::clamp((z - 0.05f) * (1.0f / 0.65f), 0.0f, 1.0f);
   return 0.3f + 0.7f * t * t * (3.0f - 2.0f * t);
 }
 

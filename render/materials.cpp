@@ -158,47 +158,6 @@ Vec3f material_albedo(const SurfacePoint& s) {
   return Vec3f(0.5f, 0.0f, 0.5f);
 }
 
-MaterialResponse material_response(Material m) {
-  switch (m) {
-    case Material::Ground: return {0.85f, 0.04f, 0.0f};
-    case Material::Trail: return {0.9f, 0.04f, 0.0f};
-    case Material::BarkConifer:
-    case Material::BarkBroadleaf:
-    case Material::BarkDead:
-    case Material::BarkSpruce:
-    case Material::BarkPine:
-    case Material::BarkLarch:
-    case Material::BarkOak:
-    case Material::LogBark: return {0.85f, 0.04f, 0.0f};
-    case Material::BarkBeech:
-    case Material::BarkBirch: return {0.6f, 0.04f, 0.0f};
-    case Material::Needles:
-    case Material::NeedlesSpruce:
-    case Material::NeedlesPine: return {0.5f, 0.04f, 0.6f};
-    case Material::NeedlesLarch:
-    case Material::AutumnNeedles: return {0.55f, 0.04f, 0.8f};
-    case Material::Leaves:
-    case Material::ShrubLeaves:
-    case Material::LeavesBeech:
-    case Material::LeavesBirch:
-    case Material::LeavesOak: return {0.55f, 0.04f, 1.0f};
-    case Material::Fern: return {0.5f, 0.04f, 1.0f};
-    case Material::Grass: return {0.55f, 0.04f, 0.8f};
-    case Material::AutumnLeaves: return {0.55f, 0.04f, 0.9f};
-    case Material::AutumnGrass: return {0.65f, 0.04f, 0.6f};
-    case Material::WinterGrass: return {0.75f, 0.04f, 0.4f};
-    case Material::DeadBracken: return {0.75f, 0.04f, 0.3f};
-    case Material::BareTwigs: return {0.8f, 0.04f, 0.0f};
-    case Material::Rock: return {0.7f, 0.045f, 0.0f};
-    case Material::Wood: return {0.75f, 0.04f, 0.0f};
-    case Material::BrokenWood: return {0.8f, 0.04f, 0.0f};
-    case Material::Moss: return {0.95f, 0.03f, 0.0f};
-    case Material::LeafLitter: return {0.8f, 0.04f, 0.0f};
-    case Material::Count: break;
-  }
-  return {1.0f, 0.04f, 0.0f};
-}
-
 Vec3f bumped_normal(const Vec3f& n, const Vec3f& slope) {
   const Vec3f tilted = n - (slope - n * n.dot(slope));
   return tilted * (1.0f / std::sqrt(tilted.dot(tilted)));

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Procedural, seeded surface colours for every core/material.hpp Material.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -68,8 +69,47 @@ struct MaterialResponse {
   float translucency;  ///< Fraction of the light a back-lit thin card lets through (0: opaque).
 };
 
-/// The response of material `m` (a fixed table: waxy leaves are smoother than bark, bark than litter).
-MaterialResponse material_response(Material m);
+/// Every material's response, in core/material.hpp order (waxy leaves are smoother than bark,
+/// bark than litter; thin foliage lets light through).
+inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterialResponses = {{
+    {0.85f, 0.04f, 0.0f},  // Ground
+    {0.9f, 0.04f, 0.0f},  // Trail
+    {0.85f, 0.04f, 0.0f},  // BarkConifer
+    {0.85f, 0.04f, 0.0f},  // BarkBroadleaf
+    {0.85f, 0.04f, 0.0f},  // BarkDead
+    {0.5f, 0.04f, 0.6f},  // Needles
+    {0.55f, 0.04f, 1.0f},  // Leaves
+    {0.55f, 0.04f, 0.8f},  // Grass
+    {0.5f, 0.04f, 1.0f},  // Fern
+    {0.55f, 0.04f, 1.0f},  // ShrubLeaves
+    {0.7f, 0.045f, 0.0f},  // Rock
+    {0.75f, 0.04f, 0.0f},  // Wood
+    {0.85f, 0.04f, 0.0f},  // LogBark
+    {0.8f, 0.04f, 0.0f},  // BrokenWood
+    {0.95f, 0.03f, 0.0f},  // Moss
+    {0.8f, 0.04f, 0.0f},  // LeafLitter
+    {0.85f, 0.04f, 0.0f},  // BarkSpruce
+    {0.85f, 0.04f, 0.0f},  // BarkPine
+    {0.85f, 0.04f, 0.0f},  // BarkLarch
+    {0.6f, 0.04f, 0.0f},  // BarkBeech
+    {0.6f, 0.04f, 0.0f},  // BarkBirch
+    {0.85f, 0.04f, 0.0f},  // BarkOak
+    {0.5f, 0.04f, 0.6f},  // NeedlesSpruce
+    {0.5f, 0.04f, 0.6f},  // NeedlesPine
+    {0.55f, 0.04f, 0.8f},  // NeedlesLarch
+    {0.55f, 0.04f, 1.0f},  // LeavesBeech
+    {0.55f, 0.04f, 1.0f},  // LeavesBirch
+    {0.55f, 0.04f, 1.0f},  // LeavesOak
+    {0.55f, 0.04f, 0.9f},  // AutumnLeaves
+    {0.55f, 0.04f, 0.8f},  // AutumnNeedles
+    {0.8f, 0.04f, 0.0f},  // BareTwigs
+    {0.65f, 0.04f, 0.6f},  // AutumnGrass
+    {0.75f, 0.04f, 0.4f},  // WinterGrass
+    {0.75f, 0.04f, 0.3f},  // DeadBracken
+}};
+
+/// The response of material `m`.
+inline MaterialResponse material_response(Material m) { return kMaterialResponses[size_t(m)]; }
 
 /// The shading normal of a surface point with the relief of its material: bark, rock and wood are
 /// bumped by the gradient of the same value noise that grains their albedo, faded out where one

@@ -148,12 +148,32 @@ constexpr float kSharpReflection = 0.3f;
 /// yellow-green and absorbs blue.
 const Vec3f kTransmissionTint(1.3f, 1.15f, 0.55f);
 
+/// The sky and ground light a rough surface mirrors, by the mirrored direction's z only: the
+/// ambient fit's irradiance / π straight up, level and straight down, blended linearly in z and
+/// times forest_sky_view (per frame; a few multiplies per pixel instead of the full fit).
+struct MirroredSky {
+  Vec3f up, level, down;  ///< Radiance mirrored from z = 1, 0, -1 (kcd/m²).
+
+  /// Samples `sky`'s ambient fit.
+  explicit MirroredSky(const Sky& sky)
+      : up(sky.ambient(Vec3f(0, 0, 1)) * kInvPi),
+        level((sky.ambient(Vec3f(1, 0, 0)) + sky.ambient(Vec3f(-1, 0, 0)) + sky.ambient(Vec3f(0, 1, 0)) +
+               sky.ambient(Vec3f(0, -1, 0))) * (0.25f * kInvPi)),
+        down(sky.ambient(Vec3f(0, 0, -1)) * kInvPi) {}
+
+  /// The radiance mirrored along unit direction `dir`.
+  Vec3f along(const Vec3f& dir) const {
+    const float z = dir.z();
+    return (level + ((z > 0.0f ? up : down) - level) * std::abs(z)) * forest_sky_view(z);
+  }
+};
+
 /// Linear radiance (kcd/m²) leaving a visible surface pixel towards the camera, fog included:
 /// the albedo (after the weather's look) x (sun x n·l + ambient SH irradiance x occlusion) / π with
 /// the material's relief in the shading normal, a GGX highlight of the sun, the sky mirrored by
 /// the surface's Fresnel weight, and the sun shining through back-lit thin foliage.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const WeatherLook& look,
-                       const RowTerms& row, int u, int v, const Vec3f& view_dir) {
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const MirroredSky& mirror, const HeightFog& fog,
+                       const WeatherLook& look, const RowTerms& row, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
@@ -186,11 +206,11 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& f
   }
   out += albedo.cwiseProduct(diffuse) * kInvPi;
   const Vec3f mirrored_dir = reflect_to_eye(n, to_eye);
-  Vec3f mirrored = sky.ambient(mirrored_dir) * kInvPi;  // the sky seen through a rough lobe
+  Vec3f mirrored = mirror.along(mirrored_dir);  // the sky seen through a rough lobe
   if (roughness < kSharpReflection && mirrored_dir.z() > 0.0f)
-    mirrored += (sky.diffuse(mirrored_dir) - mirrored) * (1.0f - roughness / kSharpReflection);
-  out += mirrored * (ambient_specular_weight(n.dot(to_eye), roughness, response.f0) * ambient_visible *
-                     forest_sky_view(mirrored_dir.z()));
+    mirrored += (sky.diffuse(mirrored_dir) * forest_sky_view(mirrored_dir.z()) - mirrored) *
+                (1.0f - roughness / kSharpReflection);
+  out += mirrored * (ambient_specular_weight(n.dot(to_eye), roughness, response.f0) * ambient_visible);
   return fog.apply(out, row.fog_amount[size_t(u)], view_dir);
 }
 
@@ -207,6 +227,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const Sky sky(lit);
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
   const WeatherLook look(lit.weather);
+  const MirroredSky mirror(sky);
   const float exposure = exposure_multiplier(lit.ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
@@ -227,7 +248,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       for (int u = 0; u < g.width; ++u) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, look, terms, u, v, dir);
+        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir)
+                                         : surface_radiance(in, sky, mirror, fog, look, terms, u, v, dir);
       }
       if (overlay.active()) overlay.apply_row(v, radiance, g.width);
       if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
