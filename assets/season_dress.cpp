@@ -20,8 +20,10 @@ void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
-    if (part.material == Material::Fern) {  // bracken turns, then dies back, orange-brown
-      part.material = Material::AutumnLeaves;
+    if (part.material == Material::Fern) {  // bracken turns orange-brown, then dies back grey-brown
+      part.material = season == Season::Winter ? Material::DeadBracken : Material::AutumnLeaves;
+    } else if (part.material == Material::Grass) {  // straw in autumn, dry and pale in winter
+      part.material = season == Season::Winter ? Material::WinterGrass : Material::AutumnGrass;
     } else if (!is_deciduous_foliage(part.material)) {
       continue;
     } else if (season == Season::Winter) {

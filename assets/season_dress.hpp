@@ -11,8 +11,8 @@ bool is_deciduous_foliage(Material m);
 
 /// Summer: unchanged. Autumn: deciduous leaf parts get AutumnLeaves, larch needles AutumnNeedles.
 /// Winter: deciduous foliage parts get the bare twig mask and BareTwigs (role unchanged: the bare
-/// crown is still canopy). Fern fronds get AutumnLeaves in both (standing dead bracken in
-/// winter). Evergreen needles, grass and everything solid stay as they are.
+/// crown is still canopy). Fern fronds get AutumnLeaves in autumn and DeadBracken in winter;
+/// grass cards AutumnGrass or WinterGrass. Evergreen needles and everything solid stay as they are.
 void dress_for_season(Mesh& mesh, Season season);
 
 }  // namespace silva::assets

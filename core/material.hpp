@@ -37,6 +37,9 @@ enum class Material : uint8_t {
   AutumnLeaves,   ///< Deciduous leaves in autumn: yellow, orange and brown by tree and card.
   AutumnNeedles,  ///< Larch needles in autumn: golden.
   BareTwigs,      ///< Twig cards of deciduous trees and shrubs in winter: grey-brown.
+  AutumnGrass,    ///< Grass in autumn: straw and yellow-brown with a little green left.
+  WinterGrass,    ///< Grass in winter: dry and pale.
+  DeadBracken,    ///< Fern fronds in winter: dull grey-brown standing dead bracken.
   Count,
 };
 

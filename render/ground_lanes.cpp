@@ -47,8 +47,14 @@ VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
   return hn::Mul(hn::ConvertTo(df, top), hn::Set(df, 1.0f / 16777216.0f));
 }
 
-/// value_noise2 on lanes.
-VF value_noise2_lanes(VF x, VF y, uint32_t salt) {
+/// Derivative of smooth_weight on lanes: 6 t (1 - t).
+VF smooth_slope_lanes(VF t) {
+  const DF d;
+  return hn::Mul(hn::Mul(hn::Set(d, 6.0f), t), hn::Sub(hn::Set(d, 1.0f), t));
+}
+
+/// value_noise2 on lanes; with `dx`, `dy` also its gradient (per unit of x and y).
+VF value_noise2_lanes(VF x, VF y, uint32_t salt, VF* dx = nullptr, VF* dy = nullptr) {
   const DU du;
   const VF fx = hn::Floor(x), fy = hn::Floor(y);
   const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), fx)), iy = hn::BitCast(du, hn::ConvertTo(DI(), fy));
@@ -57,7 +63,12 @@ VF value_noise2_lanes(VF x, VF y, uint32_t salt) {
   const VF v00 = lattice_value_lanes(ix, iy, salt), v10 = lattice_value_lanes(hn::Add(ix, one), iy, salt);
   const VF v01 = lattice_value_lanes(ix, hn::Add(iy, one), salt);
   const VF v11 = lattice_value_lanes(hn::Add(ix, one), hn::Add(iy, one), salt);
-  return mix_lanes(mix_lanes(v00, v10, wx), mix_lanes(v01, v11, wx), wy);
+  const VF a = mix_lanes(v00, v10, wx), b = mix_lanes(v01, v11, wx);
+  if (dx) {
+    *dx = hn::Mul(mix_lanes(hn::Sub(v10, v00), hn::Sub(v11, v01), wy), smooth_slope_lanes(hn::Sub(x, fx)));
+    *dy = hn::Mul(hn::Sub(b, a), smooth_slope_lanes(hn::Sub(y, fy)));
+  }
+  return mix_lanes(a, b, wy);
 }
 
 /// fbm2 on lanes.
@@ -87,7 +98,7 @@ VF mix_channel(VF c, const float* to, int k, VF t) { return mix_lanes(c, hn::Set
 
 /// ground_albedo_row for one target.
 void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count, Vec3f* out,
-                   float* soil_out) {
+                   float* soil_out, Vec2f* slope_out) {
   const DF d;
   const size_t N = hn::Lanes(d);
   const float* p = positions->data();
@@ -109,7 +120,8 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
     const VF flat = smoothstep_lanes(0.6f, 0.9f, nz);
     const VF fine_detail = hn::Sub(one, smoothstep_lanes(0.01f, 0.05f, footprint));
     const VF needles = smoothstep_lanes(0.42f, 0.58f, fbm2_lanes(scaled(px, 0.02f), scaled(py, 0.02f), 2, kGroundStandSalt));
-    const VF leaf = value_noise2_lanes(scaled(px, 9.0f), scaled(py, 9.0f), kGroundLeafSalt);
+    VF leaf_dx, leaf_dy, speckle_dx, speckle_dy;
+    const VF leaf = value_noise2_lanes(scaled(px, 9.0f), scaled(py, 9.0f), kGroundLeafSalt, &leaf_dx, &leaf_dy);
     const VF dry = hn::Mul(hn::Mul(smoothstep_lanes(0.6f, 0.8f, leaf), hn::Sub(one, needles)), fine_detail);
     const VF grass =
         hn::Mul(scaled(smoothstep_lanes(0.62f, 0.78f, fbm2_lanes(scaled(px, 0.06f), scaled(py, 0.06f), 2, kGroundGrassSalt)), 0.8f), flat);
@@ -119,7 +131,8 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
                                                                                          scaled(py, 0.5f), 3, kGroundSoilSalt)));
     const VF grain = fbm2_lanes(scaled(px, 4.0f), scaled(py, 4.0f), 2, kGroundFineSalt);
     const VF grain_amount = hn::Sub(one, smoothstep_lanes(0.1f, 0.4f, footprint));
-    const VF speckle = value_noise2_lanes(scaled(px, 23.0f), scaled(py, 23.0f), kGroundLeafSalt + 1);
+    const VF speckle =
+        value_noise2_lanes(scaled(px, 23.0f), scaled(py, 23.0f), kGroundLeafSalt + 1, &speckle_dx, &speckle_dy);
     const VF brightness =
         hn::Mul(hn::Add(one, hn::Mul(hn::Sub(scaled(grain, 0.6f), hn::Set(d, 0.3f)), grain_amount)),
                 hn::Add(one, hn::Mul(hn::Sub(scaled(speckle, 0.8f), hn::Set(d, 0.4f)), fine_detail)));
@@ -134,6 +147,15 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
     }
     hn::StoreInterleaved3(c[0], c[1], c[2], d, res);
     std::copy(res, res + 3 * lanes, o + 3 * first);
+    if (slope_out) {  // relief height kGroundLeafRelief leaf + kGroundSpeckleRelief speckle, in metres
+      const float kl = 9.0f * kGroundLeafRelief, ks = 23.0f * kGroundSpeckleRelief;
+      const VF sx = hn::Mul(hn::Add(scaled(leaf_dx, kl), scaled(speckle_dx, ks)), fine_detail);
+      const VF sy = hn::Mul(hn::Add(scaled(leaf_dy, kl), scaled(speckle_dy, ks)), fine_detail);
+      HWY_ALIGN float xs[hn::MaxLanes(d)], ys[hn::MaxLanes(d)];
+      hn::Store(sx, d, xs);
+      hn::Store(sy, d, ys);
+      for (size_t k = 0; k < lanes; ++k) slope_out[first + k] = Vec2f(xs[k], ys[k]);
+    }
     if (soil_out) {
       HWY_ALIGN float w[hn::MaxLanes(d)];
       hn::Store(soil, d, w);
@@ -155,8 +177,8 @@ HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
 
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil) {
-  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, footprints, count, out, soil);
+                       Vec3f* out, float* soil, Vec2f* slope) {
+  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, footprints, count, out, soil, slope);
 }
 
 int64_t ground_simd_target() { return HWY_DYNAMIC_DISPATCH(GroundTargetImpl)(); }

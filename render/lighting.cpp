@@ -41,7 +41,7 @@ constexpr WeatherField kWeatherFields[] = {
     {"cloud_transmittance_scale", &W::cloud_transmittance_scale, nullptr, 0.0f, 1.0f, "multiplies the time of day's cloud_transmittance (darker clouds)"},
     {"fog_density_scale", &W::fog_density_scale, nullptr, 0.0f, 1000.0f, "multiplies the time of day's fog_density"},
     {"ev100_offset", &W::ev100_offset, nullptr, -10.0f, 10.0f, "added to the time of day's ev100 (negative = brighter image)"},
-    {"wetness", &W::wetness, nullptr, 0.0f, 1.0f, "wet look: darker, more saturated surfaces and a sheen on upward ones"},
+    {"wetness", &W::wetness, nullptr, 0.0f, 1.0f, "wet look: darker, more saturated and glossier surfaces"},
     {"snow_cover", &W::snow_cover, nullptr, 0.0f, 1.0f, "snow on upward-facing surfaces and the ground (RGB only)"},
     {"rain_streaks", &W::rain_streaks, nullptr, 0.0f, 1.0f, "density of falling rain streaks drawn over the RGB"},
     {"snowfall", &W::snowfall, nullptr, 0.0f, 1.0f, "density of falling snowflakes drawn over the RGB"},
@@ -100,7 +100,6 @@ std::map<std::string, WeatherPreset> builtin_weathers() {
   WeatherPreset mist;
   mist.cloud_cover_min = 0.7f;
   mist.fog_density_scale = 6.0f;
-  mist.ev100_offset = -0.5f;
   WeatherPreset rain;
   rain.cloud_cover_min = 1.0f;
   rain.cloud_transmittance_scale = 0.6f;

@@ -21,7 +21,7 @@ struct WeatherPreset {
   float cloud_transmittance_scale = 1.0f;  ///< Multiplies the time of day's cloud_transmittance (darker clouds).
   float fog_density_scale = 1.0f;          ///< Multiplies the time of day's fog_density.
   float ev100_offset = 0.0f;               ///< Added to the time of day's ev100 (negative = brighter image).
-  float wetness = 0.0f;                    ///< Wet look: darker, more saturated albedo and a sheen on upward surfaces (0..1).
+  float wetness = 0.0f;                    ///< Wet look: darker, more saturated albedo, lower roughness (0..1).
   float snow_cover = 0.0f;                 ///< Snow on upward-facing surfaces and the ground (0..1).
   float rain_streaks = 0.0f;               ///< Density of falling rain streaks drawn over the RGB (0..1).
   float snowfall = 0.0f;                   ///< Density of falling snowflakes drawn over the RGB (0..1).

@@ -1,6 +1,7 @@
 #include "render/materials.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/ground_object_materials.hpp"
 #include "render/bark_materials.hpp"
@@ -54,13 +55,12 @@ Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
   return base.cwiseProduct(variation_tint(s.variation)) * (0.8f + 0.4f * mottle);
 }
 
-/// Grass: green with yellowed patches across the ground, lighter towards the blade tip (v = 0).
-Vec3f grass(const SurfacePoint& s) {
+/// Grass: `fresh` with `dry` patches across the ground, lighter towards the blade tip (v = 0).
+Vec3f grass(const SurfacePoint& s, const Vec3f& fresh, const Vec3f& dry) {
   const Vec3f& p = s.position;
-  const float dry = smoothstep(0.5f, 0.75f, fbm2(p.x() * 0.3f, p.y() * 0.3f, 2, kFoliage + 2));
-  const Vec3f base = lerp(Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f), dry);
+  const float patch = smoothstep(0.5f, 0.75f, fbm2(p.x() * 0.3f, p.y() * 0.3f, 2, kFoliage + 2));
   const float tip = 1.0f - std::clamp(s.uv.y(), 0.0f, 1.0f);
-  return foliage(s, base) * (0.75f + 0.4f * tip);
+  return foliage(s, lerp(fresh, dry, patch)) * (0.75f + 0.4f * tip);
 }
 
 /// Autumn leaves: each tree turned its own way (its variation) from yellow-green through yellow
@@ -87,6 +87,34 @@ Vec3f wood(const SurfacePoint& s) {
   return lerp(side, cut, smoothstep(0.85f, 0.95f, s.normal.z()));
 }
 
+/// The value noise whose gradient bumps a material's shading normal: frequencies per world axis
+/// (1/m), salt, and relief height per unit of noise (metres; 0 = smooth).
+struct Relief {
+  float fx, fy, fz;
+  uint32_t salt;
+  float height;
+};
+
+/// Each material's relief: the grain noise of its albedo function.
+Relief relief(Material m) {
+  switch (m) {
+    case Material::BarkConifer:
+    case Material::BarkBroadleaf:
+    case Material::BarkDead: return {30.0f, 30.0f, 4.0f, kBarkStreak + 7, 0.008f};  // bark()'s grain
+    case Material::Wood: return {30.0f, 30.0f, 4.0f, kBarkStreak + 7, 0.005f};
+    case Material::BarkSpruce: return {40.0f, 40.0f, 12.0f, kBarkPlate, 0.005f};     // furrowed()'s grain
+    case Material::BarkPine:
+    case Material::BarkLarch:
+    case Material::BarkOak: return {40.0f, 40.0f, 12.0f, kBarkPlate, 0.009f};
+    case Material::BarkBeech:
+    case Material::BarkBirch: return {40.0f, 40.0f, 12.0f, kBarkPlate, 0.0025f};
+    case Material::LogBark: return {25.0f, 25.0f, 25.0f, kLogFurrow + 1, 0.006f};
+    case Material::BrokenWood: return {80.0f, 80.0f, 8.0f, kBrokenGrain, 0.0015f};
+    case Material::Rock: return {3.0f, 3.0f, 3.0f, kRockGrain, 0.06f};  // the grain fBm's first octave
+    default: return {1.0f, 1.0f, 1.0f, 0, 0.0f};
+  }
+}
+
 }  // namespace
 
 Vec3f material_albedo(const SurfacePoint& s) {
@@ -98,7 +126,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BarkDead: return bark(s, Vec3f(0.33f, 0.31f, 0.28f), 0.5f, 0.0f);
     case Material::Needles: return foliage(s, Vec3f(0.045f, 0.1f, 0.035f));
     case Material::Leaves: return foliage(s, Vec3f(0.08f, 0.17f, 0.035f));
-    case Material::Grass: return grass(s);
+    case Material::Grass: return grass(s, Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f));
     case Material::Fern: return foliage(s, Vec3f(0.07f, 0.18f, 0.04f));
     case Material::ShrubLeaves: return foliage(s, Vec3f(0.07f, 0.14f, 0.045f));
     case Material::Rock: return rock_albedo(s);
@@ -122,28 +150,28 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::AutumnLeaves: return autumn_leaves(s);
     case Material::AutumnNeedles: return foliage(s, Vec3f(0.36f, 0.25f, 0.045f));
     case Material::BareTwigs: return foliage(s, Vec3f(0.11f, 0.095f, 0.08f));
+    case Material::AutumnGrass: return grass(s, Vec3f(0.19f, 0.17f, 0.06f), Vec3f(0.3f, 0.22f, 0.09f));
+    case Material::WinterGrass: return grass(s, Vec3f(0.27f, 0.24f, 0.16f), Vec3f(0.2f, 0.16f, 0.11f));
+    case Material::DeadBracken: return foliage(s, Vec3f(0.15f, 0.115f, 0.085f));
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);
 }
 
-float material_translucency(Material m) {
-  switch (m) {
-    case Material::Needles:
-    case Material::Leaves:
-    case Material::Grass:
-    case Material::Fern:
-    case Material::ShrubLeaves:
-    case Material::NeedlesSpruce:
-    case Material::NeedlesPine:
-    case Material::NeedlesLarch:
-    case Material::LeavesBeech:
-    case Material::LeavesBirch:
-    case Material::LeavesOak:
-    case Material::AutumnLeaves:
-    case Material::AutumnNeedles: return 1.0f;
-    default: return 0.0f;
-  }
+Vec3f bumped_normal(const Vec3f& n, const Vec3f& slope) {
+  const Vec3f tilted = n - (slope - n * n.dot(slope));
+  return tilted * (1.0f / std::sqrt(tilted.dot(tilted)));
+}
+
+Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
+  const Relief r = relief(s.material);
+  if (r.height <= 0.0f) return s.normal;
+  const float fade = 1.0f - smoothstep(0.15f, 0.4f, footprint * std::max({r.fx, r.fy, r.fz}));
+  if (fade <= 0.0f) return s.normal;
+  const Vec3f& p = s.position;
+  const NoiseGradient g = value_noise3_gradient(p.x() * r.fx, p.y() * r.fy, p.z() * r.fz, r.salt);
+  const float h = r.height * fade;
+  return bumped_normal(s.normal, Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h));
 }
 
 }  // namespace silva::render

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Procedural, seeded surface colours for every core/material.hpp Material.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -47,13 +48,77 @@ inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< B
 ///   out = c (1 + (0.6 fbm2(4 p, 2, fine) - 0.3) (1 - smoothstep(0.1, 0.4, footprint)))
 ///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
 /// with shading_noise.hpp's noise evaluated lane by lane in its operation order (every target agrees).
+/// `slope` (may be null) receives the gradient (d/dx, d/dy, metres per metre) of the floor's relief
+///   height = (kGroundLeafRelief leaf + kGroundSpeckleRelief speckle) fine_detail
+/// (analytic derivatives of the same two value noises; fine_detail taken as constant).
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil = nullptr);
+                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr);
+
+/// Relief height of the forest floor per unit of its leaf-sized noise (metres): leaves lying on each other.
+inline constexpr float kGroundLeafRelief = 0.012f;
+/// Relief height per unit of the floor's speckle noise (metres): twigs, needles, grit.
+inline constexpr float kGroundSpeckleRelief = 0.004f;
 
 /// The Highway target ground_albedo_row dispatches to now.
 int64_t ground_simd_target();
 
-/// 1 for thin foliage that lets light through when back-lit (needles, leaves, grass, ferns), else 0.
-float material_translucency(Material m);
+/// How a material reflects and transmits light beyond its diffuse albedo.
+struct MaterialResponse {
+  float roughness;     ///< Perceptual GGX roughness in (0, 1] (the GGX alpha is its square).
+  float f0;            ///< Specular reflectance at normal incidence (0.04: most dielectrics).
+  float translucency;  ///< Fraction of the light a back-lit thin card lets through (0: opaque).
+};
+
+/// Every material's response, in core/material.hpp order (waxy leaves are smoother than bark,
+/// bark than litter; thin foliage lets light through).
+inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterialResponses = {{
+    {0.85f, 0.04f, 0.0f},  // Ground
+    {0.9f, 0.04f, 0.0f},  // Trail
+    {0.85f, 0.04f, 0.0f},  // BarkConifer
+    {0.85f, 0.04f, 0.0f},  // BarkBroadleaf
+    {0.85f, 0.04f, 0.0f},  // BarkDead
+    {0.5f, 0.04f, 0.6f},  // Needles
+    {0.55f, 0.04f, 1.0f},  // Leaves
+    {0.55f, 0.04f, 0.8f},  // Grass
+    {0.5f, 0.04f, 1.0f},  // Fern
+    {0.55f, 0.04f, 1.0f},  // ShrubLeaves
+    {0.7f, 0.045f, 0.0f},  // Rock
+    {0.75f, 0.04f, 0.0f},  // Wood
+    {0.85f, 0.04f, 0.0f},  // LogBark
+    {0.8f, 0.04f, 0.0f},  // BrokenWood
+    {0.95f, 0.03f, 0.0f},  // Moss
+    {0.8f, 0.04f, 0.0f},  // LeafLitter
+    {0.85f, 0.04f, 0.0f},  // BarkSpruce
+    {0.85f, 0.04f, 0.0f},  // BarkPine
+    {0.85f, 0.04f, 0.0f},  // BarkLarch
+    {0.6f, 0.04f, 0.0f},  // BarkBeech
+    {0.6f, 0.04f, 0.0f},  // BarkBirch
+    {0.85f, 0.04f, 0.0f},  // BarkOak
+    {0.5f, 0.04f, 0.6f},  // NeedlesSpruce
+    {0.5f, 0.04f, 0.6f},  // NeedlesPine
+    {0.55f, 0.04f, 0.8f},  // NeedlesLarch
+    {0.55f, 0.04f, 1.0f},  // LeavesBeech
+    {0.55f, 0.04f, 1.0f},  // LeavesBirch
+    {0.55f, 0.04f, 1.0f},  // LeavesOak
+    {0.55f, 0.04f, 0.9f},  // AutumnLeaves
+    {0.55f, 0.04f, 0.8f},  // AutumnNeedles
+    {0.8f, 0.04f, 0.0f},  // BareTwigs
+    {0.65f, 0.04f, 0.6f},  // AutumnGrass
+    {0.75f, 0.04f, 0.4f},  // WinterGrass
+    {0.75f, 0.04f, 0.3f},  // DeadBracken
+}};
+
+/// The response of material `m`.
+inline MaterialResponse material_response(Material m) { return kMaterialResponses[size_t(m)]; }
+
+/// The shading normal of a surface point with the relief of its material: bark, rock and wood are
+/// bumped by the gradient of the same value noise that grains their albedo, faded out where one
+/// pixel (`footprint` metres) covers more than about a third of the noise's period. Other
+/// materials return s.normal. Labels and the `normals` output keep the geometric normal.
+Vec3f material_shading_normal(const SurfacePoint& s, float footprint);
+
+/// `n` tilted by a height field's gradient `slope` (metres per metre) and renormalised: the
+/// gradient's part along n is dropped, the rest subtracted.
+Vec3f bumped_normal(const Vec3f& n, const Vec3f& slope);
 
 }  // namespace silva::render

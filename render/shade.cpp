@@ -12,6 +12,7 @@
 
 #include "core/base_color.hpp"
 #include "core/error.hpp"
+#include "render/brdf.hpp"
 #include "render/camera_encode.hpp"
 #include "render/camera_optics.hpp"
 #include "render/linear_frame.hpp"
@@ -90,15 +91,19 @@ struct RowTerms {
   std::vector<int32_t> ao_missing;  ///< Scratch: pixels without a reusable AO sample.
   std::vector<float> ao_evaluated;  ///< Scratch: their AO.
   std::vector<float> sun_visible;   ///< Shadow-map visibility per pixel (1 without shadows).
-  std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only Material::Ground pixels set).
+  std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only procedural Ground pixels set).
+  std::vector<Vec2f> ground_slope;  ///< Ground relief gradient per pixel (the same pixels).
   std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
   std::vector<Vec3f> gather_p, gather_n, gather_out;  ///< Compacted ground inputs and results.
   std::vector<float> gather_footprint, gather_soil;  ///< Metres per pixel there; bare-soil weights.
+  std::vector<Vec2f> gather_slope;  ///< Compacted relief gradients.
+  float metres_per_depth = 0.0f;    ///< Width of one pixel per metre of depth (1 / fx).
   uint64_t bare_soil = 0;           ///< Ground pixels with a bare-soil weight >= 0.5 (all rows evaluated).
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
-      : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)) {}
+      : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)),
+        ground_slope(size_t(width)) {}
 
   /// Evaluates the terms of row v.
   void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int v) {
@@ -112,7 +117,7 @@ struct RowTerms {
     gather_p.clear();
     gather_n.clear();
     gather_footprint.clear();
-    const float metres_per_depth = float(1.0 / in.camera.fx);
+    metres_per_depth = float(1.0 / in.camera.fx);
     for (size_t u = 0; u < w; ++u)
       if (g.depth[row + u] != 0.0f && g.material[row + u] == Material::Ground && g.base_color[row + u] == 0) {
         ground_at.push_back(uint32_t(u));
@@ -122,10 +127,12 @@ struct RowTerms {
       }
     gather_out.resize(ground_at.size());
     gather_soil.resize(ground_at.size());
+    gather_slope.resize(ground_at.size());
     ground_albedo_row(gather_p.data(), gather_n.data(), gather_footprint.data(), ground_at.size(), gather_out.data(),
-                      gather_soil.data());
+                      gather_soil.data(), gather_slope.data());
     for (size_t k = 0; k < ground_at.size(); ++k) {
       ground[ground_at[k]] = gather_out[k];
+      ground_slope[ground_at[k]] = gather_slope[k];
       bare_soil += gather_soil[k] >= 0.5f ? 1 : 0;
     }
   }
@@ -133,29 +140,77 @@ struct RowTerms {
 
 constexpr float kInvPi = 0.318309886183790672f;
 
+/// Roughness below which the mirrored sky is looked up along the reflection rather than taken from
+/// the smooth ambient fit (water films of the wet look).
+constexpr float kSharpReflection = 0.3f;
+
+/// Colour of the light a back-lit leaf lets through, per unit of its albedo: chlorophyll passes
+/// yellow-green and absorbs blue.
+const Vec3f kTransmissionTint(1.3f, 1.15f, 0.55f);
+
+/// The sky and ground light a rough surface mirrors, by the mirrored direction's z only: the
+/// ambient fit's irradiance / π straight up, level and straight down, blended linearly in z and
+/// times forest_sky_view (per frame; a few multiplies per pixel instead of the full fit).
+struct MirroredSky {
+  Vec3f up, level, down;  ///< Radiance mirrored from z = 1, 0, -1 (kcd/m²).
+
+  /// Samples `sky`'s ambient fit.
+  explicit MirroredSky(const Sky& sky)
+      : up(sky.ambient(Vec3f(0, 0, 1)) * kInvPi),
+        level((sky.ambient(Vec3f(1, 0, 0)) + sky.ambient(Vec3f(-1, 0, 0)) + sky.ambient(Vec3f(0, 1, 0)) +
+               sky.ambient(Vec3f(0, -1, 0))) * (0.25f * kInvPi)),
+        down(sky.ambient(Vec3f(0, 0, -1)) * kInvPi) {}
+
+  /// The radiance mirrored along unit direction `dir`.
+  Vec3f along(const Vec3f& dir) const {
+    const float z = dir.z();
+    return (level + ((z > 0.0f ? up : down) - level) * std::abs(z)) * forest_sky_view(z);
+  }
+};
+
 /// Linear radiance (kcd/m²) leaving a visible surface pixel towards the camera, fog included:
-/// albedo (after the weather's look) x (sun + ambient SH irradiance x occlusion) / π, plus a wet sheen.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const WeatherLook& look,
-                       const RowTerms& row, int u, int v, const Vec3f& view_dir) {
+/// the albedo (after the weather's look) x (sun x n·l + ambient SH irradiance x occlusion) / π with
+/// the material's relief in the shading normal, a GGX highlight of the sun, the sky mirrored by
+/// the surface's Fresnel weight, and the sun shining through back-lit thin foliage.
+Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const MirroredSky& mirror, const HeightFog& fog,
+                       const WeatherLook& look, const RowTerms& row, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
-  Vec3f albedo = g.base_color[i] != 0             ? unpack_srgb8(g.base_color[i])
-                 : s.material == Material::Ground ? row.ground[size_t(u)]
-                                                  : material_albedo(s);
+  const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
+  Vec3f albedo = g.base_color[i] != 0 ? unpack_srgb8(g.base_color[i])
+                 : procedural_ground  ? row.ground[size_t(u)]
+                                      : material_albedo(s);
   if (look.active()) albedo = look.albedo(albedo, s);
-  const float n_dot_l = s.normal.dot(sky.to_sun);
-  const float translucency = material_translucency(s.material) * in.preset.foliage_translucency;
-  const float sun_facing = n_dot_l > 0.0f ? n_dot_l : -n_dot_l * translucency;
-  Vec3f light = Vec3f::Zero();
-  if (sun_facing > 0.0f && sky.sun_illuminance.maxCoeff() > 0.0f) {
-    light = sky.sun_illuminance * (sun_facing * row.sun_visible[size_t(u)]);
-  }
+  const MaterialResponse response = material_response(s.material);
+  const Vec2f& slope = row.ground_slope[size_t(u)];
+  const Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
+                                    : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
+  const float roughness = look.active() ? look.roughness(response.roughness, n) : response.roughness;
+  const Vec3f to_eye = -view_dir;
   const float ao = row.ao[size_t(u)];
   const float ambient_visible = 1.0f - in.preset.ao_strength * (1.0f - ao);
-  light += sky.ambient(s.normal) * ambient_visible;
-  Vec3f out = albedo.cwiseProduct(light) * kInvPi;
-  if (look.active()) out += look.sheen(s.normal, view_dir, ambient_visible);
+  Vec3f diffuse = sky.ambient(n) * ambient_visible;
+  Vec3f out = Vec3f::Zero();
+  if (sky.sun_illuminance.maxCoeff() > 0.0f && row.sun_visible[size_t(u)] > 0.0f) {
+    const Vec3f sun = sky.sun_illuminance * row.sun_visible[size_t(u)];
+    const float n_dot_l = n.dot(sky.to_sun);
+    if (n_dot_l > 0.0f) {
+      diffuse += sun * n_dot_l;
+      out += sun * (ggx_specular(n, to_eye, sky.to_sun, roughness, response.f0) * n_dot_l);
+    } else if (response.translucency > 0.0f) {  // the card's normal faces the camera: the sun is behind it
+      const float through = back_light_transmission(s.normal.dot(sky.to_sun), view_dir.dot(sky.to_sun));
+      const float amount = through * response.translucency * in.preset.foliage_translucency * kInvPi;
+      out += albedo.cwiseProduct(kTransmissionTint).cwiseProduct(sun) * amount;
+    }
+  }
+  out += albedo.cwiseProduct(diffuse) * kInvPi;
+  const Vec3f mirrored_dir = reflect_to_eye(n, to_eye);
+  Vec3f mirrored = mirror.along(mirrored_dir);  // the sky seen through a rough lobe
+  if (roughness < kSharpReflection && mirrored_dir.z() > 0.0f)
+    mirrored += (sky.diffuse(mirrored_dir) * forest_sky_view(mirrored_dir.z()) - mirrored) *
+                (1.0f - roughness / kSharpReflection);
+  out += mirrored * (ambient_specular_weight(n.dot(to_eye), roughness, response.f0) * ambient_visible);
   return fog.apply(out, row.fog_amount[size_t(u)], view_dir);
 }
 
@@ -171,7 +226,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const LightingPreset lit = with_weather(in.preset);
   const Sky sky(lit);
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
-  const WeatherLook look(lit.weather, sky);
+  const WeatherLook look(lit.weather);
+  const MirroredSky mirror(sky);
   const float exposure = exposure_multiplier(lit.ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
@@ -192,7 +248,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       for (int u = 0; u < g.width; ++u) {
         const size_t i = row + size_t(u);
         const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir) : surface_radiance(in, sky, fog, look, terms, u, v, dir);
+        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir)
+                                         : surface_radiance(in, sky, mirror, fog, look, terms, u, v, dir);
       }
       if (overlay.active()) overlay.apply_row(v, radiance, g.width);
       if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);

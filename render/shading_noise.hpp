@@ -33,6 +33,15 @@ float value_noise2(float x, float y, uint32_t salt);
 /// 3D value noise in [0, 1).
 float value_noise3(float x, float y, float z, uint32_t salt);
 
+/// A noise value with its gradient (per unit of the noise's own coordinates).
+struct NoiseGradient {
+  float value;       ///< The noise, as value_noise3 gives it.
+  float dx, dy, dz;  ///< Partial derivatives.
+};
+
+/// value_noise3 (the same value) and its analytic gradient.
+NoiseGradient value_noise3_gradient(float x, float y, float z, uint32_t salt);
+
 /// Fractal sum of `octaves` 2D value-noise layers (lacunarity 2, gain 0.5), normalised to [0, 1).
 float fbm2(float x, float y, int octaves, uint32_t salt);
 

@@ -27,7 +27,7 @@ struct Sky {
 
   Vec3f to_sun;            ///< Unit direction towards the sun or moon.
   Vec3f sun_illuminance;   ///< Direct light at normal incidence, klx per channel (after clouds; 0 below the horizon).
-  Vec3f horizon_radiance;  ///< Mean diffuse sky radiance just above the horizon (what wet surfaces mirror).
+  Vec3f horizon_radiance;  ///< Mean diffuse sky radiance just above the horizon (what rain streaks catch).
   Vec3f mean_radiance;     ///< Diffuse sky and ground bounce averaged over all directions (what fog scatters).
   IrradianceSH ambient_sh; ///< Sky above and ground bounce below, as irradiance.
 

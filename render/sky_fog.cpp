@@ -16,7 +16,8 @@ HeightFog::HeightFog(const LightingPreset& preset, const Sky& sky, const Vec3f& 
       params_{camera_position, std::max(preset.fog_height_falloff, 0.0f),
               float(double(preset.fog_density) *
                     det_exp(-double(preset.fog_height_falloff) * double(camera_position.z() - preset.fog_height)))},
-      in_scatter_(to_vec(preset.fog_tint).cwiseProduct(sky.mean_radiance + sky.sun_illuminance * (0.25f * kInvPi))),
+      in_scatter_(to_vec(preset.fog_tint).cwiseProduct(sky.mean_radiance + sky.sun_illuminance * (0.25f * kInvPi)) *
+                  kFogCanopyOpenness),
       sun_scatter_(to_vec(preset.fog_tint).cwiseProduct(sky.sun_illuminance) * (0.3f * kInvPi * preset.fog_sun_scatter)) {}
 
 float HeightFog::amount(const Vec3f& point) const {

@@ -7,6 +7,11 @@
 
 namespace silva::render {
 
+/// Fraction of the open sky's light (and the sun's) that the air under the canopy receives: fog
+/// inside a forest is shaded by the crowns like the floor beneath it, so mist never outshines the
+/// surfaces it hangs between (night mist stays as dark as the night).
+inline constexpr float kFogCanopyOpenness = 0.45f;
+
 /// Height fog of one preset and camera position: density(z) = fog_density * exp(-falloff (z - fog_height)).
 struct HeightFog {
   /// Precomputes the camera-height factor of the fog integral.
@@ -17,7 +22,8 @@ struct HeightFog {
   /// amount() of `count` points at once into `out` (SIMD lanes; the same values).
   void amounts(const Vec3f* points, size_t count, float* out) const { fog_amounts(params_, points, count, out); }
   /// Fog radiance along unit view direction `dir`: the light arriving from all directions (sky,
-  /// ground bounce, sun) scattered evenly, plus a forward lobe towards the sun; times fog_tint.
+  /// ground bounce, sun) scattered evenly, times kFogCanopyOpenness, plus a forward lobe towards
+  /// the sun; times fog_tint.
   Vec3f color(const Vec3f& dir) const;
   /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
   Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;

@@ -10,13 +10,14 @@ namespace {
 constexpr uint32_t kSnowSalt = 0x5e0f;
 const Vec3f kSnowAlbedo(0.80f, 0.83f, 0.88f);
 constexpr float kSnowPatchesPerMetre = 0.9f;
-constexpr float kSheen = 0.35f;  ///< How mirror-like a wet surface is at grazing view (rough, not a puddle).
+constexpr float kSnowOnCards = 0.35f;  ///< Snow cover kept on thin foliage cards (they bend and shed it).
+constexpr float kWetSmoothing = 0.55f;  ///< Fraction of the roughness a water film removes on any surface ...
+constexpr float kWetPooling = 0.3f;     ///< ... and the further fraction where the surface faces straight up.
 
 float smoothstep01(float x) { return smooth_weight(std::clamp(x, 0.0f, 1.0f)); }
 }  // namespace
 
-WeatherLook::WeatherLook(const WeatherPreset& weather, const Sky& sky)
-    : wetness_(weather.wetness), snow_(weather.snow_cover), horizon_(sky.horizon_radiance) {}
+WeatherLook::WeatherLook(const WeatherPreset& weather) : wetness_(weather.wetness), snow_(weather.snow_cover) {}
 
 Vec3f WeatherLook::albedo(const Vec3f& albedo, const SurfacePoint& s) const {
   Vec3f a = albedo;
@@ -31,18 +32,16 @@ Vec3f WeatherLook::albedo(const Vec3f& albedo, const SurfacePoint& s) const {
     const float lying = s.normal.z() - 0.45f + 0.6f * noise;  // where snow settles and stays
     float w = smoothstep01((lying - (1.0f - snow_)) * 4.0f) * snow_;
     if (s.material == Material::Trail) w *= 0.45f;  // trodden
+    if (material_response(s.material).translucency > 0.0f) w *= kSnowOnCards;
     a += (kSnowAlbedo - a) * w;
   }
   return a;
 }
 
-Vec3f WeatherLook::sheen(const Vec3f& n, const Vec3f& view_dir, float ambient_visible) const {
-  if (wetness_ <= 0.0f || n.z() <= 0.0f) return Vec3f::Zero();
-  const float c = std::clamp(-n.dot(view_dir), 0.0f, 1.0f);
-  const float m = 1.0f - c, m2 = m * m;
-  const float fresnel = 0.02f + 0.98f * m2 * m2 * m;
-  const float up = n.z() * n.z();
-  return horizon_ * (kSheen * wetness_ * fresnel * up * up * ambient_visible);
+float WeatherLook::roughness(float dry, const Vec3f& n) const {
+  if (wetness_ <= 0.0f) return dry;
+  const float up = std::max(n.z(), 0.0f);
+  return dry * (1.0f - wetness_ * (kWetSmoothing + kWetPooling * up * up));
 }
 
 }  // namespace silva::render

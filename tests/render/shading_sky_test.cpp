@@ -181,8 +181,8 @@ TEST(ShadingSky, FogScattersTheLightAroundItMostTowardsTheSun) {
   const Vec3f level_sun = Vec3f(sky.to_sun.x(), sky.to_sun.y(), 0).normalized();
   EXPECT_GT(luminance(fog.color(sky.to_sun)), luminance(fog.color(-level_sun)));
   // Away from the sun, fog is the light arriving from all around scattered evenly: the sphere's
-  // mean sky and ground radiance plus the sun's illuminance over 4π.
-  const Vec3f expected = sky.mean_radiance + sky.sun_illuminance * float(1.0 / (4.0 * kPi));
+  // mean sky and ground radiance plus the sun's illuminance over 4π, as much as the canopy lets through.
+  const Vec3f expected = (sky.mean_radiance + sky.sun_illuminance * float(1.0 / (4.0 * kPi))) * kFogCanopyOpenness;
   EXPECT_LT((fog.color(-level_sun) - expected).norm(), 1e-4f * expected.norm());
   LightingPreset overcast = day;
   overcast.cloud_cover = 1;
