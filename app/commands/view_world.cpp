@@ -172,7 +172,12 @@ nlohmann::json ViewWorld::capture(const ViewPose& pose) {
   LoadedConfig record = loaded_;
   record.config.captures.sequences = {"custom"};
   record.config.captures.poses_file = pose_path.string();
-  const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, config_hash(record), io::FolderMode::Resume);
+  // Its identity leaves the growing pose file out (each capture appends to it), so every capture
+  // of this view continues the same folder; `generate --resume` there sees another identity.
+  LoadedConfig identity = record;
+  identity.config.captures.sequences.clear();
+  const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, run_identity_hash(identity, setup_),
+                                                  io::FolderMode::Resume, resumable_config_text(record));
 
   nlohmann::json poses = fs::exists(pose_path) ? io::parse_json_text(io::read_text_file(pose_path), pose_path.string())
                                                : nlohmann::json{{"poses", nlohmann::json::array()}};
