@@ -115,7 +115,7 @@ TEST(ConfigLoader, BadSetValuesNameKeyAndAllowed) {
             "got a string (\"big\")");
   EXPECT_EQ(input_error([] { with_sets({"output.types=[\"rgbb\"]"}); }),
             "--set output.types=[\"rgbb\"]: output.types: \"rgbb\" is not allowed (a subset of rgb, "
-            "semantic, semantic_color, instance, depth, depth_exr, normal, depth_preview; did you "
+            "semantic, semantic_color, instance, depth, depth_exr, normal, depth_preview, lidar; did you "
             "mean \"rgb\"?)");
   EXPECT_EQ(input_error([] { with_sets({"output.types=[\"rgb\",\"rgb\"]"}); }),
             "--set output.types=[\"rgb\",\"rgb\"]: output.types lists \"rgb\" twice");

@@ -27,7 +27,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "lidar.mount_offset", "lidar.mount_rpy_deg"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 56u);
+  EXPECT_EQ(names.size(), 57u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

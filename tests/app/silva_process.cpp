@@ -60,8 +60,7 @@ std::map<std::string, std::string> folder_files(const fs::path& dir, bool with_r
     const std::string name = entry.path().filename().string();
     if (!with_run_records && name.rfind("run", 0) == 0 && entry.path().extension() == ".json") continue;
     // The dataset card describes the run (conditions, timings); tests/python/loader_test.py checks it.
-    const std::string relative = fs::relative(entry.path(), dir).generic_string();
-    if (relative == "CARD.md" || relative == "card.json" || relative.starts_with("card/")) continue;
+    if (name == "CARD.md" || name == "card.json" || entry.path().parent_path().filename() == "card") continue;
     files[fs::relative(entry.path(), dir).string()] = read_file(entry.path());
   }
   return files;

@@ -38,7 +38,7 @@ TEST(Schedule, RegistersEverySystemInPhaseOrderWithoutConflicts) {
   }
   EXPECT_EQ(names, (std::vector<std::string>{"plan_captures", "aim_camera", "stream_chunks", "generate_terrain",
                                              "place_vegetation", "resolve_overlaps", "store_chunks", "prepare_scene",
-                                             "render_views", "write_dataset"}));
+                                             "render_views", "cast_lidar", "write_dataset"}));
   EXPECT_TRUE(schedule.ecs().schedule_conflicts().empty());
 }
 
