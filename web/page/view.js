@@ -10,7 +10,7 @@ const ctx2d = canvas.getContext('2d');
 const silva = window.silva = {
   pose: { x: 0, y: 0, z: 0, yaw: 0, pitch: 0 },
   walk: true, view: 'rgb', ground: 0, generation: -1, framesDrawn: 0, fullFrames: 0,
-  still: false, lastError: '', lastCapture: null, state: null, follow: null, placed: null,
+  lastError: '', lastCapture: null, state: null, follow: null, placed: null,
 };
 
 const keys = new Set();
@@ -28,9 +28,11 @@ function poseKey(p) {
 // ---- frames ---------------------------------------------------------------------------------
 // What a frame of the current pose and view at width `w` shows.
 const frameKey = (w) => poseKey(silva.pose) + '|' + silva.view + '|' + w + '|' + silva.generation;
+// Whether the canvas shows the full frame of this very pose and view, read live (a view or pose
+// changed a moment ago is never 'still' on the old picture).
+Object.defineProperty(silva, 'still', { get: () => shownKey === frameKey(canvas.width) });
 
 async function requestFrame() {
-  silva.still = shownKey === frameKey(canvas.width);  // the full frame of this very pose and view is shown
   if (inFlight || !silva.state) return;
   const moving = performance.now() - lastMove < 250;
   const full = !moving;
@@ -57,7 +59,6 @@ async function requestFrame() {
     silva.ground = placed.ground;
     if (placed.generation !== silva.generation) { silva.generation = placed.generation; refreshState(); }
     shownKey = key.slice(0, key.lastIndexOf('|') + 1) + placed.generation;
-    silva.still = shownKey === frameKey(canvas.width);
     frameTimes.push(performance.now());
     frameTimes = frameTimes.filter((t) => t > performance.now() - 2000);
     $('fps').textContent = (frameTimes.length / 2).toFixed(1) + ' frames/s, ' + placed.ms.toFixed(0) + ' ms';
