@@ -4,7 +4,7 @@
 
 #include "app/cli/interrupt.hpp"
 #include "app/commands/commands.hpp"
-#include "app/commands/view_session.hpp"
+#include "app/commands/view_explorer.hpp"
 #include "app/config/data_path.hpp"
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
@@ -13,9 +13,9 @@ namespace silva::app {
 
 int run_view(const ViewRequest& request, const Reporter& reporter) {
   const Stopwatch clock;
-  ViewSession session(request.sources);
+  ViewExplorer explorer(request.sources);
   web::ViewServer server(data_path("web/page"));
-  session.install(server);
+  explorer.install(server);
   int port = 0;
   try {
     port = server.bind(request.host, request.port);
@@ -23,7 +23,7 @@ int run_view(const ViewRequest& request, const Reporter& reporter) {
     throw IoError(std::string(e.what()) + " (is the port in use? try --port 0)");
   }
   const std::string url = "http://" + request.host + ":" + std::to_string(port) + "/";
-  reporter.note("silva: seed " + std::to_string(session.world()->loaded().config.seed) + ", ready in " +
+  reporter.note("silva: seed " + std::to_string(explorer.world()->loaded().config.seed) + ", ready in " +
                 std::to_string(int(clock.seconds() * 1000)) + " ms");
   reporter.result({{"ok", true}, {"url", url}, {"port", port}}, "silva view: " + url + " (Ctrl-C to stop)");
   std::thread serving([&] { server.run(); });

@@ -1,9 +1,9 @@
-// The HTTP routes of `silva view` (ViewSession::install and the handlers behind them).
+// The HTTP routes of `silva view` (ViewExplorer::install and the handlers behind them).
 #include <cmath>
 #include <cstdlib>
 #include <string>
 
-#include "app/commands/view_session.hpp"
+#include "app/commands/view_explorer.hpp"
 #include "app/config/config_print.hpp"
 #include "core/error.hpp"
 
@@ -62,7 +62,7 @@ web::Reply guarded(F&& handler) {
 
 }  // namespace
 
-web::Reply ViewSession::frame(const web::Request& r) {
+web::Reply ViewExplorer::frame(const web::Request& r) {
   ViewPose pose;
   pose.position = Vec3d(number_param(r, "x", 0), number_param(r, "y", 0), number_param(r, "z", 0));
   pose.yaw_deg = number_param(r, "yaw", 0);
@@ -93,7 +93,7 @@ web::Reply ViewSession::frame(const web::Request& r) {
   return {200, "image/jpeg", std::string(f.jpeg.begin(), f.jpeg.end()), {{"X-Silva-Pose", placed.dump()}}};
 }
 
-web::Reply ViewSession::state() const {
+web::Reply ViewExplorer::state() const {
   const std::lock_guard lock(mutex_);
   const Config& c = world_->loaded().config;
   const ViewPose start = world_->start_pose();
@@ -106,7 +106,7 @@ web::Reply ViewSession::state() const {
                      {"config", config_to_json(world_->loaded())}});
 }
 
-web::Reply ViewSession::config(const web::Request& r) {
+web::Reply ViewExplorer::config(const web::Request& r) {
   const nlohmann::json body = nlohmann::json::parse(r.body, nullptr, false);
   if (!body.is_object()) throw InputError("the config request is not a JSON object");
   ViewEdits edits;
@@ -119,13 +119,13 @@ web::Reply ViewSession::config(const web::Request& r) {
   return json_reply({{"ok", true}});
 }
 
-web::Reply ViewSession::capture(const web::Request& r) {
+web::Reply ViewExplorer::capture(const web::Request& r) {
   const nlohmann::json body = nlohmann::json::parse(r.body, nullptr, false);
   if (!body.is_object()) throw InputError("the capture request is not a JSON object");
   return json_reply(world()->capture(pose_of(body)));
 }
 
-void ViewSession::install(web::ViewServer& server) {
+void ViewExplorer::install(web::ViewServer& server) {
   server.get("/frame", [this](const web::Request& r) { return guarded([&] { return frame(r); }); });
   server.get("/probe", [this](const web::Request& r) {
     return guarded([&] { return json_reply(world()->probe(number_param(r, "u", -1), number_param(r, "v", -1))); });

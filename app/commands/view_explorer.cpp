@@ -1,4 +1,4 @@
-#include "app/commands/view_session.hpp"
+#include "app/commands/view_explorer.hpp"
 
 #include <utility>
 
@@ -27,7 +27,7 @@ LoadedConfig load_view_config(const ConfigSources& sources, const ViewEdits& edi
   return loaded;
 }
 
-ViewSession::ViewSession(ConfigSources sources) : sources_(std::move(sources)) {
+ViewExplorer::ViewExplorer(ConfigSources sources) : sources_(std::move(sources)) {
   LoadedConfig loaded = load_view_config(sources_, {});
   // Later edits keep the seed on screen unless they change it.
   edits_.seed = std::to_string(loaded.config.seed);
@@ -35,7 +35,7 @@ ViewSession::ViewSession(ConfigSources sources) : sources_(std::move(sources)) {
   builder_ = std::thread([this] { build_loop(); });
 }
 
-ViewSession::~ViewSession() {
+ViewExplorer::~ViewExplorer() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -44,12 +44,12 @@ ViewSession::~ViewSession() {
   builder_.join();
 }
 
-std::shared_ptr<ViewWorld> ViewSession::world() const {
+std::shared_ptr<ViewWorld> ViewExplorer::world() const {
   const std::lock_guard lock(mutex_);
   return world_;
 }
 
-void ViewSession::edit(const ViewEdits& edits) {
+void ViewExplorer::edit(const ViewEdits& edits) {
   ViewEdits next = edits;
   if (!next.seed) next.seed = edits_.seed;
   LoadedConfig loaded = load_view_config(sources_, next);
@@ -62,7 +62,7 @@ void ViewSession::edit(const ViewEdits& edits) {
   wake_.notify_all();
 }
 
-void ViewSession::build_loop() {
+void ViewExplorer::build_loop() {
   std::unique_lock lock(mutex_);
   for (;;) {
     wake_.wait(lock, [&] { return stopping_ || pending_; });

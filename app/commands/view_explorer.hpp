@@ -22,15 +22,15 @@ struct ViewEdits {
   std::vector<std::string> overrides;  ///< `key=value` in the page's order, after the command's --set.
 };
 
-/// The view's session: one world on screen, at most one being built.
-class ViewSession {
+/// The explorer behind the page: one world on screen, at most one being built.
+class ViewExplorer {
  public:
   /// Builds the first world from `sources` (seed drawn from the clock when none is given).
   /// Throws InputError like the CLI.
-  explicit ViewSession(ConfigSources sources);
-  ~ViewSession();
-  ViewSession(const ViewSession&) = delete;
-  ViewSession& operator=(const ViewSession&) = delete;
+  explicit ViewExplorer(ConfigSources sources);
+  ~ViewExplorer();
+  ViewExplorer(const ViewExplorer&) = delete;
+  ViewExplorer& operator=(const ViewExplorer&) = delete;
 
   /// Registers the page's routes: GET /frame, /probe, /state, /trail, /map, /config.toml;
   /// POST /config, /capture.
