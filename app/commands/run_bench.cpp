@@ -10,7 +10,7 @@
 #include "app/config/data_path.hpp"
 #include "bench/harness/bench_charts.hpp"
 #include "bench/harness/bench_compare.hpp"
-#include "bench/harness/bench_peers.hpp"
+#include "bench/harness/bench_programs.hpp"
 #include "bench/harness/bench_process.hpp"
 #include "bench/harness/bench_report.hpp"
 #include "bench/harness/bench_suite.hpp"
@@ -46,6 +46,21 @@ nlohmann::json ratio_of(const nlohmann::json& results, const std::string& table,
   return nullptr;
 }
 
+/// A Google Benchmark program run by `silva bench` (bench_programs.hpp) and where its results go.
+struct BenchProgram {
+  const char* key;     ///< Key of its results in the JSON (and its markdown section).
+  const char* name;    ///< Program in <build>/bench/.
+  const char* filter;  ///< --benchmark_filter ("" = every benchmark).
+};
+
+/// The rasteriser peers; `silva view`'s frames on 2 threads (moving at 960x540 and 480x270, RGB and
+/// semantic) and its first frame; the LiDAR sweep and chunk update on 2 threads.
+constexpr BenchProgram kBenchPrograms[] = {
+    {"peers", "peers_bench", ""},
+    {"view", "view_bench", "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame"},
+    {"lidar", "lidar_bench", "Lidar.*/2/"},
+};
+
 }  // namespace
 
 int run_bench(const BenchRequest& request, const Reporter& reporter) {
@@ -69,9 +84,12 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   results["generation_process"] = generation_and_process(
       results, interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
                            : time_whole_process(silva_binary_path(), plan, cores));
-  results["peers"] = interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
-                                 : run_peers_bench(peers_bench_path());
-  reporter.note(results["peers"].value("ran", false) ? "peers_bench ran" : results["peers"]["note"].get<std::string>());
+  for (const BenchProgram& program : kBenchPrograms) {
+    results[program.key] = interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
+                                       : run_bench_program(bench_program_path(program.name), program.filter);
+    reporter.note(results[program.key].value("ran", false) ? std::string(program.name) + " ran"
+                                                           : results[program.key]["note"].get<std::string>());
+  }
 
   const std::string stem = results["created_utc"].get<std::string>().substr(0, 10) + "-" +
                            results["cpu_slug"].get<std::string>() + "-bench" + (plan.kind == "full" ? "" : "-" + plan.kind) +

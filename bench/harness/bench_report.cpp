@@ -4,7 +4,7 @@
 #include <map>
 #include <sstream>
 
-#include "bench/harness/bench_peers.hpp"
+#include "bench/harness/bench_programs.hpp"
 #include "bench/harness/bench_process.hpp"
 
 namespace silva::app {
@@ -151,7 +151,9 @@ std::string bench_markdown(const nlohmann::json& results, const std::string& pre
   scaling_table(md, results);
   chart(md, "threads");
   if (results.contains("generation_process")) md << generation_process_markdown(results["generation_process"]);
-  md << peers_markdown(results.value("peers", nlohmann::json::object()));
+  md << program_markdown("Rasteriser peers", results.value("peers", nlohmann::json::object()));
+  if (results.contains("view")) md << program_markdown("`silva view` frames", results["view"]);
+  if (results.contains("lidar")) md << program_markdown("LiDAR", results["lidar"]);
   return md.str();
 }
 

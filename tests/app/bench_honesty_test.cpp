@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "bench/harness/bench_peers.hpp"
+#include "bench/harness/bench_programs.hpp"
 #include "bench/harness/bench_process.hpp"
 #include "bench/harness/bench_report.hpp"
 
@@ -46,14 +46,36 @@ TEST(BenchPeers, APeerThatWasNotBuiltSaysSoAndReportsNoTime) {
   EXPECT_EQ(md.find("0.000"), std::string::npos) << "a peer that did not run must never report zero:\n" << md;
 }
 
+TEST(BenchPrograms, SectionsShowTheUserCountersOfEachBenchmark) {
+  nlohmann::json results = results_with(peers_without_embree());
+  results["view"] = {{"ran", true},
+                     {"program", "bench/view_bench"},
+                     {"filter", "BM_ViewFrameMoving/threads:2"},
+                     {"benchmarks",
+                      {{{"name", "BM_ViewFrameMoving/threads:2/mode:0/width:480"},
+                        {"iterations", 40},
+                        {"real_time", 83.0},
+                        {"cpu_time", 82.5},
+                        {"time_unit", "ms"},
+                        {"frames_per_s", 12.05},
+                        {"pixels", 129600}}}}};
+  const std::string md = bench_markdown(results, "", {}, "/nonexistent", "x");
+  EXPECT_NE(md.find("## `silva view` frames"), std::string::npos) << md;
+  EXPECT_NE(md.find("--benchmark_filter='BM_ViewFrameMoving/threads:2'"), std::string::npos) << md;
+  EXPECT_NE(md.find("| BM_ViewFrameMoving/threads:2/mode:0/width:480 | 83.000 | ms | frames_per_s=12.05, pixels=1.296e+05 |"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("iterations="), std::string::npos) << "Google Benchmark's own fields are not counters:\n" << md;
+}
+
 TEST(BenchPeers, OutcomeTellsNotBuiltFromDidNotRun) {
-  EXPECT_EQ(peer_outcome({{"real_time", 3.0}}).status, "ran");
-  const PeerOutcome failed = peer_outcome({{"error_occurred", true}, {"error_message", "llvmpipe disagrees"}});
+  EXPECT_EQ(program_outcome({{"real_time", 3.0}}).status, "ran");
+  const ProgramOutcome failed = program_outcome({{"error_occurred", true}, {"error_message", "llvmpipe disagrees"}});
   EXPECT_EQ(failed.status, "did not run");
   EXPECT_EQ(failed.note, "did not run: llvmpipe disagrees");
-  EXPECT_EQ(peer_outcome({{"real_time", 0.0}}).status, "did not run") << "no error but no time is not a figure";
+  EXPECT_EQ(program_outcome({{"real_time", 0.0}}).status, "did not run") << "no error but no time is not a figure";
   const std::string no_egl = "built without the llvmpipe peer (Debian: libegl-dev)";
-  EXPECT_EQ(peer_outcome({{"error_occurred", true}, {"error_message", no_egl}}).note,
+  EXPECT_EQ(program_outcome({{"error_occurred", true}, {"error_message", no_egl}}).note,
             "not built: install libegl-dev and rebuild (built without the llvmpipe peer)");
 }
 
