@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "generate_errors_fixture.hpp"
+#include "textured_library.hpp"
 
 namespace silva::test {
 namespace {
@@ -97,13 +98,7 @@ TEST_F(GenerateErrors, UndecodableTextureIsSilvasOneLineOnly) {
   // An OBJ asset whose material names a texture file that is not there: OpenCV's imread logs a
   // "[ WARN ... ] imread_(...): can't open/read file" line of its own unless Silva silences it.
   const fs::path library = dir_ / "library";
-  fs::create_directories(library);
-  std::ofstream(library / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
-                                      "usemtl photo\nf 1/1 2/2 3/3\n";
-  std::ofstream(library / "a.mtl") << "newmtl photo\nKd 1 1 1\nmap_Kd photo.png\n";
-  std::ofstream(library / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
-    {"name": "a", "file": "a.obj", "kind": "rock", "class": "obstacle", "parts": {"photo": "obstacle"},
-     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  textured_obj_library(library, "photo.png");
   const ScopedEnv env("SILVA_ASSETS", library.string());
   expect_refused(args({"--overwrite"}), 2, {"a.obj", "texture 'photo.png' cannot be decoded"});
 }
