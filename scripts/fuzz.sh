@@ -2,8 +2,10 @@
 # Runs every libFuzzer harness of a fuzz build folder for a set time from its seed corpus.
 # Usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]   (default: every target)
 # New interesting inputs go to BUILD_DIR/fuzz-corpus/<target>/ (the repository's corpus is only
-# read); a crash leaves its input in BUILD_DIR/crashes/<target>/ and makes the script exit 1.
-# One summary line per target: seconds run, executions, coverage, crashes.
+# read); a crash, leak, timeout or out-of-memory leaves its input in BUILD_DIR/crashes/<target>/ and
+# makes the script exit 1 (inputs slower than 10 s land there too, as slow-unit-*, and are only counted).
+# One summary line per target: seconds run (wall and CPU: on a busy machine they differ), executions,
+# coverage, crashes.
 set -uo pipefail
 build=${1:?usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]}
 seconds=${2:?usage: scripts/fuzz.sh BUILD_DIR SECONDS [TARGET...]}
@@ -18,13 +20,17 @@ for t in "${targets[@]}"; do
   mkdir -p "$build/fuzz-corpus/$t" "$build/crashes/$t"
   log="$build/crashes/$t.log"
   start=$(date +%s)
-  ASAN_OPTIONS=detect_leaks=0 "$exe" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=30 \
-    -artifact_prefix="$build/crashes/$t/" "$build/fuzz-corpus/$t" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1
+  TIMEFORMAT='%U %S'
+  { time ASAN_OPTIONS=detect_leaks=0 "$exe" -max_total_time="$seconds" -rss_limit_mb=4096 -timeout=30 \
+      -artifact_prefix="$build/crashes/$t/" "$build/fuzz-corpus/$t" "$root/tests/fuzz/corpus/$t" >"$log" 2>&1; } \
+    2>"$build/crashes/$t.time"
   rc=$?
   elapsed=$(( $(date +%s) - start ))
-  stats=$(grep -E '^(#[0-9]+|Done)' "$log" | tail -1)
-  crashes=$(find "$build/crashes/$t" -type f | wc -l)
-  echo "fuzz $t: ${elapsed} s, exit $rc, crashes $crashes, last: $stats"
+  cpu=$(awk '{printf "%.0f", $1 + $2}' "$build/crashes/$t.time")
+  stats=$(grep -E '^#[0-9]+' "$log" | tail -1)  # '#runs DONE cov: ft: corp: exec/s: rss:'
+  crashes=$(find "$build/crashes/$t" -type f ! -name 'slow-unit-*' | wc -l)
+  slow=$(find "$build/crashes/$t" -type f -name 'slow-unit-*' | wc -l)
+  echo "fuzz $t: ${elapsed} s (${cpu} s CPU), exit $rc, crashes $crashes, slow units $slow, last: $stats"
   [ "$rc" -ne 0 ] || [ "$crashes" -ne 0 ] && failed=1
 done
 exit $failed

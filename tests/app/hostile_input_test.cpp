@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "generate_errors_fixture.hpp"
+#include "textured_library.hpp"
 
 namespace silva::test {
 namespace {
@@ -91,6 +92,15 @@ TEST_F(GenerateErrors, DataFilesThatAreFoldersAreBadInput) {
   fs::create_directories(library / "library.json");
   const ScopedEnv env("SILVA_ASSETS", library.string());
   expect_refused(args({"--overwrite"}), 2, {"library.json", "not a regular file"});
+}
+
+TEST_F(GenerateErrors, UndecodableTextureIsSilvasOneLineOnly) {
+  // An OBJ asset whose material names a texture file that is not there: OpenCV's imread logs a
+  // "[ WARN ... ] imread_(...): can't open/read file" line of its own unless Silva silences it.
+  const fs::path library = dir_ / "library";
+  textured_obj_library(library, "photo.png");
+  const ScopedEnv env("SILVA_ASSETS", library.string());
+  expect_refused(args({"--overwrite"}), 2, {"a.obj", "texture 'photo.png' cannot be decoded"});
 }
 
 TEST_F(GenerateErrors, FarAwayPosesAreRefusedBeforeAnythingIsWritten) {
@@ -244,6 +254,64 @@ TEST_F(GenerateErrors, SecondWriterIsRefusedNamingThePid) {
   EXPECT_EQ(second.code, 2) << second.err;
   EXPECT_NE(second.err.find("PID " + std::to_string(first.pid)), std::string::npos) << second.err;
   EXPECT_EQ(stopped.code, 130) << stopped.err;
+}
+
+TEST_F(GenerateErrors, SecondWriterWhileMergeHoldsTheLockIsRefused) {
+  std::vector<std::string> shard = args({"--shard", "0/1"});
+  shard[4] = (dir_ / "shards").string();  // --out
+  ASSERT_EQ(run_silva(shard, dir_).code, 0);
+  const fs::path run = dir_ / "shards" / "0000002024";
+  fs::create_directories(dir_ / "merge");
+  const ChildProcess merge = start_silva({"merge", run.string()}, dir_ / "merge", /*traced=*/true);
+  ASSERT_TRUE(stop_after_lock(merge));  // merge holds the lock and waits here
+  std::vector<std::string> overwrite = shard;
+  overwrite.erase(overwrite.end() - 2, overwrite.end());
+  overwrite.push_back("--overwrite");
+  const ProcessResult late_shard = run_silva(shard, dir_);
+  const ProcessResult fresh_run = run_silva(overwrite, dir_);
+  release_traced(merge);
+  const ProcessResult merged = wait_silva(merge);
+  for (const ProcessResult* second : {&late_shard, &fresh_run}) {
+    EXPECT_EQ(second->code, 2) << second->err;
+    EXPECT_EQ(lines_of(second->err).size(), 1u) << second->err;
+    EXPECT_NE(second->err.find("in use by another silva process (PID " + std::to_string(merge.pid) + ")"),
+              std::string::npos)
+        << second->err;
+  }
+  EXPECT_EQ(merged.code, 0) << merged.err;
+  EXPECT_TRUE(fs::is_regular_file(run / "manifest.json"));
+}
+
+TEST_F(GenerateErrors, MergeWhileAShardWritesIsRefused) {
+  std::vector<std::string> shard = args({"--shard", "0/1"});
+  shard[4] = (dir_ / "shards").string();  // --out
+  ASSERT_EQ(run_silva(shard, dir_).code, 0);
+  const fs::path run = dir_ / "shards" / "0000002024";
+  fs::remove(run / "random" / "depth" / "000001.png");
+  fs::create_directories(dir_ / "shard");
+  const ChildProcess rerun = start_silva(shard, dir_ / "shard", /*traced=*/true);
+  ASSERT_TRUE(stop_after_lock(rerun));  // the shard holds its shared lock and waits here
+  const ProcessResult merged = run_silva({"merge", run.string()}, dir_);
+  release_traced(rerun);
+  EXPECT_EQ(wait_silva(rerun).code, 0);
+  EXPECT_EQ(merged.code, 2) << merged.err;
+  EXPECT_NE(merged.err.find("(PID " + std::to_string(rerun.pid) + ")"), std::string::npos) << merged.err;
+  EXPECT_FALSE(fs::exists(run / "manifest.json"));
+}
+
+TEST_F(GenerateErrors, SecondResumeIsRefusedNamingThePid) {
+  fs::remove(out_ / "0000002024" / "random" / "camera" / "000001.json");
+  const std::vector<std::string> resume = args({"--resume"});
+  fs::create_directories(dir_ / "first");
+  const ChildProcess first = start_silva(resume, dir_ / "first", /*traced=*/true);
+  ASSERT_TRUE(stop_after_lock(first));
+  const ProcessResult second = run_silva(resume, dir_);
+  release_traced(first);
+  const ProcessResult finished = wait_silva(first);
+  EXPECT_EQ(second.code, 2) << second.err;
+  EXPECT_NE(second.err.find("(PID " + std::to_string(first.pid) + ")"), std::string::npos) << second.err;
+  EXPECT_EQ(finished.code, 0) << finished.err;
+  EXPECT_EQ(file_differences(folder_files(out_), before_plain_), "");
 }
 
 TEST_F(GenerateErrors, TerminateWhilePlanningStopsAtOnce) {

@@ -11,9 +11,11 @@
 #include "app/commands/asset_files.hpp"
 #include "core/error.hpp"
 #include "tests/common/mesh_checks.hpp"
+#include "textured_library.hpp"
 
 namespace silva::assets {
 using app::build_library;
+using silva::test::textured_obj_library;
 namespace {
 
 namespace fs = std::filesystem;
@@ -253,17 +255,11 @@ TEST_F(LoadLibraryTest, CorruptUserAssetsNameFileAndField) {
 
 TEST_F(LoadLibraryTest, HugeTextureIsRefusedBeforeDecoding) {
   const fs::path d = *dir_ / "huge_texture";
-  fs::create_directories(d);
+  textured_obj_library(d, "big.png");
   // A PNG header claiming 60000 x 60000 pixels: refused from the header, never allocated.
   const unsigned char header[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
                                   0, 0, 0xea, 0x60, 0, 0, 0xea, 0x60, 8, 6, 0, 0, 0};
   std::ofstream(d / "big.png", std::ios::binary).write(reinterpret_cast<const char*>(header), sizeof header);
-  std::ofstream(d / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
-                                "usemtl photo\nf 1/1 2/2 3/3\n";
-  std::ofstream(d / "a.mtl") << "newmtl photo\nKd 1 1 1\nmap_Kd big.png\n";
-  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
-    {"name": "a", "file": "a.obj", "kind": "rock", "class": "obstacle", "parts": {"photo": "obstacle"},
-     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
   expect_error(d / "library.json", {"a.obj", "big.png", "60000x60000"});
 }
 

@@ -3,11 +3,15 @@
 #include "tests/common/scratch_dirs.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/ptrace.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -15,7 +19,7 @@ namespace silva::test {
 
 namespace fs = std::filesystem;
 
-ChildProcess start_silva(const std::vector<std::string>& args, const fs::path& scratch) {
+ChildProcess start_silva(const std::vector<std::string>& args, const fs::path& scratch, bool traced) {
   static int counter = 0;
   ChildProcess child;
   const std::string tag = std::to_string(counter++);
@@ -33,11 +37,35 @@ ChildProcess start_silva(const std::vector<std::string>& args, const fs::path& s
     if (out < 0 || err < 0) _exit(126);
     ::dup2(out, STDOUT_FILENO);
     ::dup2(err, STDERR_FILENO);
+    if (traced && ::ptrace(PTRACE_TRACEME, 0, nullptr, nullptr) != 0) _exit(125);
     ::execv(argv[0], argv.data());
     _exit(127);
   }
   return child;
 }
+
+bool stop_after_lock(const ChildProcess& child) {
+  int status = 0;
+  if (::waitpid(child.pid, &status, 0) != child.pid || !WIFSTOPPED(status)) return false;  // the stop at exec
+  ::ptrace(PTRACE_SETOPTIONS, child.pid, nullptr, PTRACE_O_TRACESYSGOOD | PTRACE_O_EXITKILL);
+  uint64_t call = 0;  // the system call the child is in
+  long signal = 0;    // a signal to pass on
+  for (;;) {
+    if (::ptrace(PTRACE_SYSCALL, child.pid, nullptr, signal) != 0) return false;
+    if (::waitpid(child.pid, &status, 0) != child.pid || !WIFSTOPPED(status)) return false;
+    signal = 0;
+    if (WSTOPSIG(status) != (SIGTRAP | 0x80)) {  // a signal, not a system call stop
+      signal = WSTOPSIG(status);
+      continue;
+    }
+    __ptrace_syscall_info info{};
+    if (::ptrace(PTRACE_GET_SYSCALL_INFO, child.pid, sizeof info, &info) <= 0) return false;
+    if (info.op == PTRACE_SYSCALL_INFO_ENTRY) call = info.entry.nr;
+    if (info.op == PTRACE_SYSCALL_INFO_EXIT && call == SYS_flock && info.exit.rval == 0) return true;
+  }
+}
+
+void release_traced(const ChildProcess& child) { ::ptrace(PTRACE_DETACH, child.pid, nullptr, nullptr); }
 
 ProcessResult wait_silva(const ChildProcess& child) {
   ProcessResult r;

@@ -24,8 +24,17 @@ struct ChildProcess {
   std::filesystem::path err;     ///< File receiving stderr.
 };
 
-/// Starts `silva args...` with stdout/stderr redirected into files under `scratch`.
-ChildProcess start_silva(const std::vector<std::string>& args, const std::filesystem::path& scratch);
+/// Starts `silva args...` with stdout/stderr redirected into files under `scratch`; with `traced`
+/// the child stops at its start under this process's ptrace (see stop_after_lock).
+ChildProcess start_silva(const std::vector<std::string>& args, const std::filesystem::path& scratch,
+                         bool traced = false);
+
+/// Runs a child started with `traced` until one of its flock() calls succeeds (it took its run-folder
+/// lock) and leaves it stopped there, holding the lock; false when it ended first.
+bool stop_after_lock(const ChildProcess& child);
+
+/// Lets a traced child run on, no longer traced.
+void release_traced(const ChildProcess& child);
 
 /// Waits for `child` and collects its exit status and output.
 ProcessResult wait_silva(const ChildProcess& child);
