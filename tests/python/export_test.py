@@ -352,6 +352,9 @@ def check_semantickitti():
         assert sorted(doc["learning_map"].values()) == list(range(len(doc["labels"])))
         assert all(doc["learning_map_inv"][t] == k for k, t in doc["learning_map"].items())
         assert doc["split"]["train"] == sorted(int(numbers[s]) for s in manifest["frames"])
+    r = silva("export", DATASET, "--format", "all", "--out", os.path.join(work, "all"), "--json")
+    assert [e["format"] for e in json.loads(r.stdout)["exports"]] == \
+        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio"], "all: semantickitti without lidar"
     r = silva("export", DATASET, "--format", "semantickitti", "--out", os.path.join(work, "none"), expect=2)
     assert "needs output type 'lidar'" in r.stderr and r.stderr.count("\n") == 1, r.stderr
     r = silva("generate", "--seed", "1", "--out", os.path.join(work, "none"), "--set", 'output.formats=["semantickitti"]',
