@@ -74,6 +74,15 @@ void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, co
   }
 }
 
+/// Writes the finished run's output.formats into <run_dir>/export/ (as silva export).
+void export_run_formats(const Config& cfg, const fs::path& run_dir, const Reporter& reporter) {
+  if (cfg.output.formats.empty()) return;
+  std::vector<io::ExportFormat> formats;
+  for (const std::string& name : cfg.output.formats) formats.push_back(io::parse_export_format(name, "output.formats"));
+  export_formats(io::open_dataset(run_dir), formats, run_dir / "export", /*overwrite=*/true);
+  reporter.note("silva: exported " + std::to_string(formats.size()) + " formats into " + (run_dir / "export").string());
+}
+
 /// Prints the run's summary: a JSON object with --json, else one line.
 void report_summary(const Reporter& reporter, const systems::CaptureStats& stats, const nlohmann::json& record,
                     int64_t seed, const fs::path& run_dir, int skipped, size_t planned, double card_s) {
@@ -163,14 +172,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   } else {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
-    if (!cfg.output.formats.empty()) {
-      std::vector<io::ExportFormat> formats;
-      for (const std::string& name : cfg.output.formats)
-        formats.push_back(io::parse_export_format(name, "output.formats"));
-      export_formats(io::open_dataset(run_dir), formats, run_dir / "export", /*overwrite=*/true);
-      reporter.note("silva: exported " + std::to_string(formats.size()) + " formats into " +
-                    (run_dir / "export").string());
-    }
+    export_run_formats(cfg, run_dir, reporter);
     const Stopwatch card_clock;
     write_card(run_dir, {&stats.card, &schedule, &setup});
     card_s = card_clock.seconds();
