@@ -30,11 +30,16 @@ size_t count_files(const fs::path& dir) {
 }
 
 /// Starts a run into `out` and SIGKILLs it once `files` files exist below its run folder, or
-/// after `ms` milliseconds, whichever comes first; returns how it ended.
+/// `ms` milliseconds after its marker appeared (loading and planning take longer on a loaded
+/// machine), whichever comes first; returns how it ended.
 ProcessResult kill_run(const fs::path& out, const fs::path& scratch, size_t files, int ms) {
   const ChildProcess child = start_silva(tiny_run_args(out, kSeed, kAllTypes), scratch);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
   const fs::path run_dir = out / "0000004242";
+  while (!fs::exists(run_dir / ".silva-run.json")) {
+    if (::waitpid(child.pid, nullptr, WNOHANG) == child.pid) return {0, "", "finished before the kill"};
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
   while (count_files(run_dir) < files && std::chrono::steady_clock::now() < deadline) {
     if (::waitpid(child.pid, nullptr, WNOHANG) == child.pid) return {0, "", "finished before the kill"};
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
