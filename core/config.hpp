@@ -103,6 +103,7 @@ struct LidarConfig {
   std::string preset = "vlp16";                     ///< lidar.preset: a [lidar.presets.<name>]
   std::vector<double> mount_offset = {0, 0, 0.3};   ///< lidar.mount_offset: metres forward, left, up of the camera
   std::vector<double> mount_rpy_deg = {0, 0, 0};    ///< lidar.mount_rpy_deg: roll, pitch, yaw from the camera's heading
+  bool motion_distortion = false;                   ///< lidar.motion_distortion: autopilot sweeps move along the trail
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

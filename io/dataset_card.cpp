@@ -3,62 +3,121 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <span>
 
 #include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+#include "io/json_read.hpp"
 
 namespace silva::io {
 
 namespace {
 
-/// One frame's share of the counts.
-CardCounts count_frame(const Dataset& d, const DatasetFrame& f) {
+/// Adds the class ids of a semantic image.
+void count_semantic(std::span<const uint8_t> ids, CardCounts& c) {
+  c.pixels += ids.size();
+  for (uint8_t id : ids) ++c.class_pixels[id];
+}
+
+/// Adds the instances (with pixels) of an instance image and its table.
+void count_instances(std::span<const uint16_t> index, const std::vector<InstanceEntry>& table, CardCounts& c) {
+  std::vector<uint64_t> area(table.size() + 1, 0);
+  for (uint16_t i : index)
+    if (i < area.size()) ++area[i];
+  for (const InstanceEntry& e : table) {
+    if (!area[e.index]) continue;
+    ++c.class_instances[e.class_id];
+    ++c.instance_sizes[std::min(CardCounts::kSizeBins - 1, int(std::bit_width(area[e.index])) - 1)];
+  }
+}
+
+/// Adds one depth value (millimetres, 0 = no hit) to the histogram.
+void count_depth(uint16_t mm, CardCounts& c) {
+  if (mm == 0) ++c.depth_no_hit;
+  else ++c.depth[std::min(CardCounts::kDepthBins - 1, int(mm / 2000))];
+}
+
+/// The pixels of a one-channel image as a span.
+template <class T>
+std::span<const T> pixels(const cv::Mat& image) {
+  return {image.ptr<T>(), image.total()};
+}
+
+/// One frame's label counts, read from its PNGs.
+CardCounts count_frame_files(const Dataset& d, const DatasetFrame& f) {
   CardCounts c;
-  if (d.has("semantic")) {
-    const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
-    c.pixels = uint64_t(semantic.total());
-    for (auto it = semantic.begin<uint8_t>(); it != semantic.end<uint8_t>(); ++it) ++c.class_pixels[*it];
-  }
-  if (d.has("instance")) {
-    const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
-    const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
-    std::vector<uint64_t> area(table.size() + 1, 0);
-    for (auto it = instance.begin<uint16_t>(); it != instance.end<uint16_t>(); ++it)
-      if (*it < area.size()) ++area[*it];
-    for (const InstanceEntry& e : table) {
-      if (!area[e.index]) continue;
-      ++c.class_instances[e.class_id];
-      ++c.instance_sizes[std::min(CardCounts::kSizeBins - 1, int(std::bit_width(area[e.index])) - 1)];
+  if (d.has("semantic")) count_semantic(pixels<uint8_t>(read_image(d.file(f, "semantic", "png"), CV_8UC1)), c);
+  if (d.has("instance"))
+    count_instances(pixels<uint16_t>(read_image(d.file(f, "instance", "png"), CV_16UC1)),
+                    read_instance_table(d.file(f, "instance", "json")), c);
+  if (d.has("depth"))
+    for (uint16_t mm : pixels<uint16_t>(read_image(d.file(f, "depth", "png"), CV_16UC1))) count_depth(mm, c);
+  if (d.has("lidar")) {
+    const std::filesystem::path path = d.file(f, "lidar_labels", "label");
+    const std::string bytes = read_text_file(path);
+    if (bytes.size() % 4) throw InputError(path.string() + ": not a SemanticKITTI label file (uint32 per point)");
+    for (size_t i = 0; i < bytes.size(); i += 4) {
+      uint32_t label;
+      std::memcpy(&label, bytes.data() + i, 4);
+      if ((label & 0xFFFFu) > 255) throw InputError(path.string() + ": class id above 255 at point " + std::to_string(i / 4));
+      ++c.lidar_class_points[label & 0xFFFFu];
     }
+    c.lidar_points = bytes.size() / 4;
   }
-  if (d.has("depth")) {
-    const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);
-    for (auto it = depth.begin<uint16_t>(); it != depth.end<uint16_t>(); ++it) {
-      if (*it == 0) ++c.depth_no_hit;
-      else ++c.depth[std::min(CardCounts::kDepthBins - 1, int(*it / 2000))];
-    }
-  }
-  const CameraRecord cam = read_camera_json(d.file(f, "camera", "json"));
-  c.positions.push_back(cam.camera.position());
-  c.forwards.push_back(cam.camera.camera_to_world.block<3, 1>(0, 2));
   return c;
 }
 
 }  // namespace
 
-CardCounts count_dataset(const Dataset& d) {
+void add_label_counts(CardCounts& into, const CardCounts& other) {
+  into.pixels += other.pixels;
+  for (size_t k = 0; k < 256; ++k) into.class_pixels[k] += other.class_pixels[k];
+  for (size_t k = 0; k < 256; ++k) into.class_instances[k] += other.class_instances[k];
+  for (size_t k = 0; k < other.instance_sizes.size(); ++k) into.instance_sizes[k] += other.instance_sizes[k];
+  for (size_t k = 0; k < other.depth.size(); ++k) into.depth[k] += other.depth[k];
+  into.depth_no_hit += other.depth_no_hit;
+  into.lidar_points += other.lidar_points;
+  for (size_t k = 0; k < 256; ++k) into.lidar_class_points[k] += other.lidar_class_points[k];
+}
+
+CardCounts count_planes(const LabelPlanes& g, std::span<const LidarPoint> lidar, const Ontology& ontology,
+                        bool semantic, bool instance, bool depth, bool lidar_selected) {
+  CardCounts c;
+  if (lidar_selected) {
+    c.lidar_points = lidar.size();
+    for (const LidarPoint& p : lidar) ++c.lidar_class_points[ontology.id(p.role)];
+  }
+  if (semantic) {
+    c.pixels = g.size();
+    for (Role r : g.role) ++c.class_pixels[ontology.id(r)];
+  }
+  if (instance) {
+    const InstanceImage image = instance_image(g, ontology);
+    count_instances(image.pixels, image.entries, c);
+  }
+  if (depth)
+    for (float z : g.depth) count_depth(depth_to_mm(z), c);
+  return c;
+}
+
+CardCounts count_dataset(const Dataset& d, const KnownCounts& known) {
   std::vector<CardCounts> frames(d.frames.size());
-  for_each_frame(d, [&](size_t i) { frames[i] = count_frame(d, d.frames[i]); });
+  for_each_frame(d, [&](size_t i) {
+    const DatasetFrame& f = d.frames[i];
+    if (!known.frames.count({f.sequence, f.frame})) frames[i] = count_frame_files(d, f);
+    const CameraRecord cam = read_camera_json(d.file(f, "camera", "json"));
+    frames[i].positions.push_back(cam.camera.position());
+    frames[i].forwards.push_back(cam.camera.camera_to_world.block<3, 1>(0, 2));
+  });
   CardCounts total;
+  add_label_counts(total, known.totals);
   std::map<std::string, int> sequences;
   for (size_t i = 0; i < frames.size(); ++i) {
     const CardCounts& c = frames[i];
-    total.pixels += c.pixels;
-    for (size_t k = 0; k < 256; ++k) total.class_pixels[k] += c.class_pixels[k];
-    for (size_t k = 0; k < 256; ++k) total.class_instances[k] += c.class_instances[k];
-    for (size_t k = 0; k < c.instance_sizes.size(); ++k) total.instance_sizes[k] += c.instance_sizes[k];
-    for (size_t k = 0; k < c.depth.size(); ++k) total.depth[k] += c.depth[k];
-    total.depth_no_hit += c.depth_no_hit;
+    add_label_counts(total, c);
     total.positions.push_back(c.positions.front());
     total.forwards.push_back(c.forwards.front());
     total.sequence_of.push_back(sequences.emplace(d.frames[i].sequence, int(sequences.size())).first->second);
@@ -99,30 +158,58 @@ std::vector<uint8_t> bar_chart(const std::string& title, const std::vector<std::
   return std::vector<uint8_t>(img.data, img.data + img.total() * 3);
 }
 
+int pose_map_width(int size, const std::vector<LegendEntry>& legend) { return size + (legend.empty() ? 0 : 150); }
+
 std::vector<uint8_t> pose_map(const CardCounts& counts, const std::vector<std::array<uint8_t, 3>>& sequence_colors,
-                              int size) {
-  cv::Mat img(size, size, CV_8UC3, cv::Scalar(255, 255, 255));
+                              int size, const MapBackground* map, const std::vector<LegendEntry>& legend) {
+  cv::Mat img(size, pose_map_width(size, legend), CV_8UC3, cv::Scalar(255, 255, 255));
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (const Vec3d& p : counts.positions)
-    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-  const double span = std::max({x1 - x0, y1 - y0, 1.0}) * 1.1, mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
+  if (map) {
+    x0 = map->x0, x1 = map->x0 + map->width * map->metres_per_pixel;
+    y1 = map->y1, y0 = map->y1 - map->height * map->metres_per_pixel;
+  } else {
+    for (const Vec3d& p : counts.positions)
+      x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  }
+  const double span = std::max({x1 - x0, y1 - y0, 1.0}) * (map ? 1.0 : 1.1), mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
   const double scale = (size - 40) / span;
   const auto to_px = [&](double x, double y) {
     return cv::Point(int(std::lround(size / 2 + (x - mx) * scale)), int(std::lround(size / 2 - (y - my) * scale)));
   };
-  char legend[64];
-  std::snprintf(legend, sizeof legend, "camera positions, top down (%.0f m across)", span);
-  cv::putText(img, legend, {8, 16}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
+  if (map)
+    for (int r = 20; r < size - 20; ++r)
+      for (int c = 20; c < size - 20; ++c) {
+        const double x = mx + (c + 0.5 - size / 2) / scale, y = my - (r + 0.5 - size / 2) / scale;
+        const int mc = int(std::floor((x - map->x0) / map->metres_per_pixel));
+        const int mr = int(std::floor((map->y1 - y) / map->metres_per_pixel));
+        if (mc < 0 || mr < 0 || mc >= map->width || mr >= map->height) continue;
+        const uint8_t* rgb = &map->rgb[(size_t(mr) * size_t(map->width) + size_t(mc)) * 3];
+        img.at<cv::Vec3b>(r, c) = cv::Vec3b(rgb[0], rgb[1], rgb[2]);
+      }
+  char title[96];
+  std::snprintf(title, sizeof title, map ? "cameras over the class map, top down (%.0f m across)"
+                                         : "camera positions, top down (%.0f m across)", span);
+  cv::putText(img, title, {8, 15}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
   for (size_t i = 0; i < counts.positions.size(); ++i) {
     const Vec3d& p = counts.positions[i];
     Vec3d f = counts.forwards[i];
     f.z() = 0;
     if (f.norm() > 0) f.normalize();
     const auto& c = sequence_colors[size_t(counts.sequence_of[i]) % sequence_colors.size()];
-    const cv::Scalar color(c[0], c[1], c[2]);
+    const cv::Scalar color(c[0], c[1], c[2]), white(255, 255, 255);
     const cv::Point a = to_px(p.x(), p.y());
-    cv::line(img, a, a + cv::Point(int(std::lround(f.x() * 12)), int(std::lround(-f.y() * 12))), color, 1, cv::LINE_AA);
+    const cv::Point b = a + cv::Point(int(std::lround(f.x() * 12)), int(std::lround(-f.y() * 12)));
+    cv::line(img, a, b, white, 3, cv::LINE_AA);
+    cv::circle(img, a, 4, white, cv::FILLED, cv::LINE_AA);
+    cv::line(img, a, b, color, 1, cv::LINE_AA);
     cv::circle(img, a, 3, color, cv::FILLED, cv::LINE_AA);
+  }
+  for (size_t k = 0; k < legend.size(); ++k) {
+    const int y = 40 + int(k) * 18;
+    const auto& c = legend[k].second;
+    cv::rectangle(img, {size + 4, y - 10}, {size + 16, y + 2}, cv::Scalar(c[0], c[1], c[2]), cv::FILLED);
+    cv::rectangle(img, {size + 4, y - 10}, {size + 16, y + 2}, {0, 0, 0});
+    cv::putText(img, legend[k].first, {size + 22, y}, cv::FONT_HERSHEY_SIMPLEX, 0.4, {0, 0, 0}, 1, cv::LINE_AA);
   }
   return std::vector<uint8_t>(img.data, img.data + img.total() * 3);
 }

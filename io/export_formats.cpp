@@ -6,7 +6,7 @@ namespace silva::io {
 
 const std::vector<std::string>& export_format_names() {
   static const std::vector<std::string> names = {"coco-panoptic", "coco-instances", "cityscapes", "colmap",
-                                                 "nerfstudio"};
+                                                 "nerfstudio", "semantickitti"};
   return names;
 }
 
@@ -28,6 +28,7 @@ void export_dataset(const Dataset& dataset, ExportFormat format, const std::file
     case ExportFormat::Cityscapes: return export_cityscapes(dataset, out);
     case ExportFormat::Colmap: return export_colmap(dataset, out);
     case ExportFormat::Nerfstudio: return export_nerfstudio(dataset, out);
+    case ExportFormat::SemanticKitti: return export_semantickitti(dataset, out);
   }
 }
 

@@ -12,9 +12,10 @@
 namespace silva::io {
 
 /// An export format.
-enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio };
+enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti };
 
-/// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio.
+/// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio,
+/// semantickitti.
 const std::vector<std::string>& export_format_names();
 
 /// The name of `format`.
@@ -37,5 +38,8 @@ void export_cityscapes(const Dataset& dataset, const std::filesystem::path& out)
 void export_colmap(const Dataset& dataset, const std::filesystem::path& out);
 /// nerfstudio / instant-ngp / 3DGS: transforms.json (OpenGL camera axes), images/, depth/, masks/.
 void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out);
+/// SemanticKITTI (LiDAR): sequences/NN/{velodyne,labels,image_2}/, calib.txt, poses.txt, times.txt and
+/// semantic-kitti.yaml, the label map.
+void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out);
 
 }  // namespace silva::io

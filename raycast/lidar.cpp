@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "core/rng.hpp"
 
 namespace silva::raycast {
@@ -43,18 +45,29 @@ std::vector<LidarPoint> cast_sweep(const RayScene& scene, const LidarPreset& pre
                                    const CastOptions& options) {
   const int rings = int(preset.elevations_deg.size());
   const size_t n = size_t(rings) * size_t(preset.columns);
+  std::vector<Mat3d> column_to_world(size_t(preset.columns), pose.sensor_to_world);
+  std::vector<Vec3d> column_origin(size_t(preset.columns), pose.position);
+  if (pose.end) {
+    const Eigen::Quaterniond q0(pose.sensor_to_world), q1(pose.end->sensor_to_world);
+    for (int c = 1; c < preset.columns; ++c) {
+      const double f = double(c) / double(preset.columns);
+      column_to_world[size_t(c)] = q0.slerp(f, q1).toRotationMatrix();
+      column_origin[size_t(c)] = pose.position + f * (pose.end->position - pose.position);
+    }
+  }
   std::vector<Ray> rays(n);
   for (int c = 0; c < preset.columns; ++c)
     for (int r = 0; r < rings; ++r) {
       Ray& ray = rays[size_t(c) * size_t(rings) + size_t(r)];
-      ray.origin = pose.position;
-      ray.direction = pose.sensor_to_world * beam_direction(preset, r, c);
+      ray.origin = column_origin[size_t(c)];
+      ray.direction = column_to_world[size_t(c)] * beam_direction(preset, r, c);
       ray.t_near = preset.min_range;
       ray.t_far = preset.max_range;
     }
   std::vector<RayHit> hits(n);
   scene.cast(rays, hits, options);
-  const Mat3d world_to_sensor = pose.sensor_to_world.transpose();
+  std::vector<Mat3d> world_to_column(column_to_world.size());
+  for (size_t c = 0; c < column_to_world.size(); ++c) world_to_column[c] = column_to_world[c].transpose();
   std::vector<LidarPoint> points;
   points.reserve(n);
   for (size_t i = 0; i < n; ++i) {
@@ -68,7 +81,7 @@ std::vector<LidarPoint> cast_sweep(const RayScene& scene, const LidarPreset& pre
     const double incidence = std::abs(h.geometric_normal.cast<double>().dot(dir));
     const double clean = double(nir_reflectivity(h.material)) * incidence * std::exp(-preset.intensity_falloff * double(h.t));
     LidarPoint p;
-    p.position = (world_to_sensor * (dir * range)).cast<float>();
+    p.position = (world_to_column[i / size_t(rings)] * (dir * range)).cast<float>();
     p.range = float(range);
     p.intensity = float(std::clamp(clean + preset.intensity_noise * double(rng.normal()), 0.0, 1.0));
     p.column = uint16_t(i / size_t(rings));

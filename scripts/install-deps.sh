@@ -18,7 +18,7 @@ PKGS=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinygltf-dev
   libdeflate-dev libxxhash-dev libssl-dev libcpp-httplib-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-numpy python3-opencv
+  python3-numpy python3-opencv python3-yaml
   chromium
 )
 BENCH_PKGS=(

@@ -10,6 +10,7 @@
 #include "raycast/lidar.hpp"
 #include "render/post.hpp"
 #include "systems/render_views.hpp"
+#include "world/plan_captures.hpp"
 #include "world/world_context.hpp"
 
 namespace silva::systems {
@@ -65,7 +66,8 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         if (!slots.current || !settings.outputs.has(io::OutputType::Lidar)) return;
         const Stopwatch clock;
         FrameWork& work = *slots.current;
-        const Config& config = sys.resource<const WorldSource>().ctx->config;
+        const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
+        const Config& config = ctx.config;
         ChunkRayScene& rays = sys.resource<ChunkRayScene>();
         rays.sync(sys.resource<const PreparedScene>().frame.chunks, builder, config.render.ground_cover_distance);
         const Camera& camera = work.frame.camera;
@@ -75,6 +77,11 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         pose.position = sensor.block<3, 1>(0, 3);
         pose.seed = uint64_t(config.seed);
         pose.key = render::noise_key(work.frame.sequence, uint64_t(work.frame.frame));
+        if (config.lidar.motion_distortion && work.frame.trail_s) {
+          const double distance = config.camera.autopilot_speed / settings.lidar.rotation_hz;
+          const Mat4d end = world::autopilot_pose_along(ctx, work.frame, distance) * lidar_to_camera(config.lidar);
+          pose.end = raycast::SweepEnd{end.block<3, 3>(0, 0), end.block<3, 1>(0, 3)};
+        }
         raycast::CastOptions options;
         options.eye = camera.position();
         work.lidar = raycast::cast_sweep(*rays.scene, settings.lidar, pose, options);

@@ -32,7 +32,8 @@ Mat4d lidar_to_camera(const LidarConfig& mount);
 /// Registers "cast_lidar" (phase Render, after render_views) and its ChunkRayScene resource: when a
 /// camera is active and output type lidar is selected, brings the scene up to the PreparedScene's
 /// chunks and casts the sweep of CaptureSettings::lidar from the camera's pose times
-/// lidar_to_camera into FrameSlots::current.
+/// lidar_to_camera into FrameSlots::current; with lidar.motion_distortion an autopilot frame's sweep moves
+/// along the trail at camera.autopilot_speed for one revolution.
 void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library);
 
 }  // namespace silva::systems

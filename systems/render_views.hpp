@@ -12,6 +12,7 @@
 #include "core/ontology.hpp"
 #include "ecs/world.hpp"
 #include "io/capture_set.hpp"
+#include "io/dataset_card.hpp"
 #include "io/output_types.hpp"
 #include "raycast/lidar.hpp"
 #include "render/gbuffer.hpp"
@@ -41,6 +42,7 @@ struct FrameWork {
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
   uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
   std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class (role) in the view.
+  io::CardCounts card;               ///< The dataset card's label counts of the frame (from the planes).
   uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
   std::vector<LidarPoint> lidar;     ///< The frame's LiDAR sweep (empty when lidar is not selected).
   double lidar_s = 0;                ///< Wall time of the sweep (scene update and cast).

@@ -58,7 +58,12 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   work.pixels_by_role.fill(0);
   for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
   const Stopwatch clock;
-  work.files = io::encode_capture_set(label_planes(work.gbuffer), work.rgb, settings.ontology, settings.outputs, f.frame);
+  const io::LabelPlanes planes = label_planes(work.gbuffer);
+  work.files = io::encode_capture_set(planes, work.rgb, settings.ontology, settings.outputs, f.frame);
+  const io::OutputSelection& out = settings.outputs;
+  work.card = io::count_planes(planes, work.lidar, settings.ontology, out.has(io::OutputType::Semantic),
+                               out.has(io::OutputType::Instance), out.has(io::OutputType::Depth),
+                               out.has(io::OutputType::Lidar));
   if (settings.outputs.has(io::OutputType::Lidar)) {
     io::LidarLabels labels = io::semantic_kitti_labels(work.lidar, settings.ontology);
     work.files.push_back({io::frame_file("lidar", f.frame, "bin"), io::kitti_scan(work.lidar)});
@@ -92,6 +97,8 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   stats.triangles_rasterised += work.triangles_rasterised;
   for (int r = 0; r < kRoleCount; ++r) stats.pixels_by_role[size_t(r)] += work.pixels_by_role[size_t(r)];
   stats.bare_soil_pixels += work.bare_soil_pixels;
+  io::add_label_counts(stats.card.totals, work.card);
+  stats.card.frames.emplace(work.frame.sequence, work.frame.frame);
   ++stats.frames_written;
   if (writer.progress) writer.progress(stats.frames_written, writer.total);
 }

@@ -8,6 +8,7 @@
 
 #include "ecs/ordered_stage.hpp"
 #include "ecs/world.hpp"
+#include "io/dataset_card.hpp"
 #include "io/label_planes.hpp"
 #include "io/output_types.hpp"
 #include "render/gbuffer.hpp"
@@ -38,6 +39,7 @@ struct CaptureStats {
   double write_s = 0;    ///< Writing files.
   double lidar_s = 0;    ///< LiDAR scene updates and sweeps.
   uint64_t lidar_points = 0;  ///< LiDAR returns written.
+  io::KnownCounts card;       ///< The dataset card's label counts of the frames written (the card reads no PNG of them).
   double wall_s = 0;     ///< Whole run, wall clock.
 };
 

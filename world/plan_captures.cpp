@@ -143,17 +143,18 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
   }
 }
 
+Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance) {
+  const int yaws = int(ctx.config.captures.autopilot_yaws.size());
+  const double s = std::clamp(*f.trail_s + distance, 0.0, ctx.trail.nav.length());
+  return autopilot_frame(ctx, f.frame / yaws, size_t(f.frame % yaws), s).camera.camera_to_world;
+}
+
 void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames) {
   const Config& c = ctx.config;
-  const int yaws = int(c.captures.autopilot_yaws.size());
-  const double half = 0.5 * c.camera.autopilot_speed * c.camera.shutter_s, length = ctx.trail.nav.length();
-  for (PlannedFrame& f : frames) {
-    const int i = f.frame / yaws;
-    const size_t k = size_t(f.frame % yaws);
-    const double open = std::clamp(*f.trail_s - half, 0.0, length), close = std::clamp(*f.trail_s + half, 0.0, length);
-    f.exposure_motion = ExposureMotion{c.camera.shutter_s, autopilot_frame(ctx, i, k, open).camera.camera_to_world,
-                                       autopilot_frame(ctx, i, k, close).camera.camera_to_world};
-  }
+  const double half = 0.5 * c.camera.autopilot_speed * c.camera.shutter_s;
+  for (PlannedFrame& f : frames)
+    f.exposure_motion = ExposureMotion{c.camera.shutter_s, autopilot_pose_along(ctx, f, -half),
+                                       autopilot_pose_along(ctx, f, half)};
 }
 
 std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {

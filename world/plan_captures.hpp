@@ -57,6 +57,11 @@ std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx);
 /// its yaws relative to the trail; marks the frames Moved or Unresolvable (left in place).
 void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames);
 
+/// The camera-to-world pose of autopilot frame `f` moved `distance` metres along the trail (negative: back;
+/// kept within the trail), its yaw relative to the trail as before: where the camera is
+/// distance / camera.autopilot_speed seconds after (or before) the frame.
+Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance);
+
 /// Gives each autopilot frame its motion while the shutter is open: the poses along the trail at
 /// trail_s -/+ camera.autopilot_speed * camera.shutter_s / 2 (kept within the trail), yaws relative to it.
 void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames);

@@ -25,7 +25,7 @@ int export_command(const ExportArgs& args) {
   request.run_dir = args.dir;
   for (const std::string& name : args.formats) {
     if (name == "all") {
-      for (const std::string& n : io::export_format_names()) request.formats.push_back(io::parse_export_format(n, ""));
+      request.all = true;
       continue;
     }
     request.formats.push_back(io::parse_export_format(name, "--format"));
@@ -42,11 +42,12 @@ Handler add_export_command(CLI::App& root) {
   auto args = std::make_shared<ExportArgs>();
   CLI::App* cmd = root.add_subcommand(
       "export",
-      "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap "
-      "or nerfstudio, each into <out>/<format>/; source images are hard-linked.");
+      "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap, "
+      "nerfstudio or semantickitti (LiDAR), each into <out>/<format>/; source files are hard-linked.");
   cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
   cmd->add_option("--format", args->formats,
-                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, or all (several: comma-separated)")
+                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, or all (every "
+                  "camera format, and semantickitti when the dataset has lidar; several: comma-separated)")
       ->required()
       ->delimiter(',')
       ->type_name("F");

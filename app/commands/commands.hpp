@@ -10,6 +10,7 @@
 
 #include "app/cli/reporter.hpp"
 #include "app/config/config_loader.hpp"
+#include "io/dataset_card.hpp"
 #include "io/dataset_reader.hpp"
 #include "io/export_formats.hpp"
 
@@ -72,6 +73,7 @@ struct MergeRequest {
 struct ExportRequest {
   std::filesystem::path run_dir;           ///< <output.dir>/<seed>/.
   std::vector<io::ExportFormat> formats;   ///< In the order given.
+  bool all = false;                        ///< --format all: every camera format, semantickitti with lidar.
   std::filesystem::path out_dir;           ///< Each format goes to <out_dir>/<format>/.
   bool overwrite = false;                  ///< --overwrite: replace an existing <out_dir>/<format>/.
 };
@@ -118,9 +120,21 @@ int run_export(const ExportRequest& request, const Reporter& reporter);
 /// checked for every format before any is written.
 nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
                               const std::filesystem::path& out_dir, bool overwrite);
+class WorldSchedule;
+struct RunSetup;
+
+/// What a generate run hands the card so that it reads less back: the label counts of the frames it wrote,
+/// and its world (schedule and setup) for the class map under the cameras. Empty: everything is read from
+/// the dataset, and the world is rebuilt from the config its run marker records.
+struct CardInputs {
+  const io::KnownCounts* known = nullptr;  ///< Label counts of the frames this process wrote.
+  WorldSchedule* schedule = nullptr;       ///< The run's schedule (its chunk cache).
+  const RunSetup* setup = nullptr;         ///< The run's loaded inputs (library, ontology, world context).
+};
+
 /// Writes <run_dir>/CARD.md, card.json and card/*.png for a finished dataset (also at the end of generate
 /// and merge). Throws InputError / IoError.
-void write_card(const std::filesystem::path& run_dir);
+void write_card(const std::filesystem::path& run_dir, const CardInputs& inputs = {});
 /// `silva card`: write_card and report; returns the exit code. Throws InputError / IoError.
 int run_card(const std::filesystem::path& run_dir, const Reporter& reporter);
 /// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.

@@ -1,10 +1,15 @@
 // `silva card DIR`: counts the dataset's own files (io/dataset_card.hpp) and writes CARD.md, card.json and
 // the charts in card/. Every number is recounted from the label, depth and camera files, so the card is the
 // same for a single run, a resumed run and merged shards.
+#include <algorithm>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <set>
 
+#include "app/commands/card_map.hpp"
 #include "app/commands/commands.hpp"
+#include "app/commands/published_classes.hpp"
 #include "app/config/config_print.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -71,7 +76,8 @@ nlohmann::json class_rows(const io::Dataset& d, const io::CardCounts& c) {
     rows.push_back({{"id", id}, {"name", name}, {"roles", roles}, {"color", color}, {"rugd", rugd}, {"rellis", rellis},
                     {"pixels", c.class_pixels[size_t(id)]},
                     {"fraction", c.pixels ? double(c.class_pixels[size_t(id)]) / double(c.pixels) : 0.0},
-                    {"instances", c.class_instances[size_t(id)]}});
+                    {"instances", c.class_instances[size_t(id)]},
+                    {"lidar_points", c.lidar_class_points[size_t(id)]}});
   }
   return rows;
 }
@@ -81,11 +87,47 @@ void write_chart(const fs::path& path, const std::vector<uint8_t>& rgb, int w, i
 }
 
 /// Colours (and their names in CARD.md) of the sequences on the pose map, in first-seen order.
-const std::vector<std::array<uint8_t, 3>> kSequenceColors = {{200, 60, 40}, {40, 120, 200}, {40, 160, 60}};
-constexpr const char* kSequenceColorNames[] = {"red", "blue", "green"};
+const std::vector<std::array<uint8_t, 3>> kSequenceColors = {{220, 30, 30}, {30, 90, 230}, {220, 40, 220}};
+constexpr const char* kSequenceColorNames[] = {"red", "blue", "magenta"};
+
+/// The published distribution beside the dataset's: per class name of `pub` that the ontology maps a class to
+/// (`rellis` names), the published share of its labelled points and the dataset's pixel and LiDAR point
+/// shares of the classes mapped to it; the rest of the published classes as one "other" row.
+nlohmann::json published_rows(const io::Dataset& d, const io::CardCounts& c, const PublishedDistribution& pub) {
+  uint64_t labelled = 0;
+  for (const PublishedClass& k : pub.classes)
+    if (k.name != pub.unlabelled) labelled += k.count;
+  std::vector<std::string> names;
+  for (const OntologyClass& oc : d.ontology.classes)
+    if (std::find(names.begin(), names.end(), oc.rellis) == names.end()) names.push_back(oc.rellis);
+  nlohmann::json rows = nlohmann::json::array();
+  uint64_t other = 0;
+  for (const PublishedClass& k : pub.classes)
+    if (k.name != pub.unlabelled && std::find(names.begin(), names.end(), k.name) == names.end()) other += k.count;
+  const auto share = [](uint64_t n, uint64_t total) { return total ? double(n) / double(total) : 0.0; };
+  for (const std::string& name : names) {
+    uint64_t published = 0, pixels = 0, points = 0;
+    std::string classes;
+    for (const PublishedClass& k : pub.classes)
+      if (k.name == name) published = k.count;
+    std::set<uint8_t> ids;
+    for (const OntologyClass& oc : d.ontology.classes)
+      if (oc.rellis == name && ids.insert(oc.id).second) {
+        pixels += c.class_pixels[oc.id];
+        points += c.lidar_class_points[oc.id];
+        classes += (classes.empty() ? "" : ", ") + oc.name;
+      }
+    rows.push_back({{"name", name}, {"published", published}, {"published_share", share(published, labelled)},
+                    {"silva_classes", classes}, {"silva_pixel_share", share(pixels, c.pixels)},
+                    {"silva_lidar_share", share(points, c.lidar_points)}});
+  }
+  rows.push_back({{"name", "other"}, {"published", other}, {"published_share", share(other, labelled)},
+                  {"silva_classes", ""}, {"silva_pixel_share", 0.0}, {"silva_lidar_share", 0.0}});
+  return rows;
+}
 
 /// card.json's object: counts, conditions, config differences and the run's timings.
-nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c) {
+nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const CameraMap& map) {
   const nlohmann::json& config = d.manifest.at("config");
   nlohmann::json run = nlohmann::json::object();
   const fs::path run_json = d.dir / "run.json";
@@ -104,6 +146,16 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c) {
           {"instance_sizes", sizes},
           {"depth_histogram", depth},
           {"depth_no_hit_pixels", c.depth_no_hit},
+          {"lidar_points", c.lidar_points},
+          {"class_map", map.map ? nlohmann::json{{"x0", map.map->x0}, {"y1", map.map->y1},
+                                                 {"metres_per_pixel", map.map->metres_per_pixel},
+                                                 {"width", map.map->width}, {"height", map.map->height}}
+                                : nlohmann::json()},
+          {"published",
+           {{"rellis3d",
+             {{"unit", rellis3d_lidar_points().unit}, {"source", rellis3d_lidar_points().source},
+              {"classes", published_rows(d, c, rellis3d_lidar_points())}}},
+            {"rugd", nullptr}}},
           {"conditions",
            {{"time_of_day", config.at("lighting").at("time_of_day")},
             {"weather", config.at("lighting").at("weather")},
@@ -114,7 +166,7 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c) {
 }
 
 /// The charts in <dir>/card/: classes, depth, instance_sizes and poses (PNG).
-void write_charts(const fs::path& dir, const nlohmann::json& card, const io::CardCounts& c) {
+void write_charts(const fs::path& dir, const nlohmann::json& card, const io::CardCounts& c, const CameraMap& map) {
   constexpr int w = 640, h = 320;
   std::vector<std::string> labels;
   std::vector<double> values;
@@ -139,11 +191,22 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
     values.push_back(double(c.instance_sizes[size_t(k)]));
   }
   chart("instance_sizes.png", "instances per size (pixels, log2 bins)");
-  write_chart(dir / "poses.png", io::pose_map(c, kSequenceColors, 480), 480, 480);
+  std::vector<io::LegendEntry> legend;
+  for (const auto& row : card["classes"])
+    if (row["roles"] != "background")
+      legend.emplace_back(row["name"].get<std::string>(), row["color"].get<std::array<uint8_t, 3>>());
+  std::optional<io::MapBackground> background;
+  if (map.map)
+    background = io::MapBackground{map.map->width, map.map->height, map.map->x0, map.map->y1,
+                                   map.map->metres_per_pixel, map.map->rgb};
+  if (!background) legend.clear();
+  write_chart(dir / "poses.png", io::pose_map(c, kSequenceColors, kMapSize, background ? &*background : nullptr, legend),
+              io::pose_map_width(kMapSize, legend), kMapSize);
 }
 
 /// CARD.md: the card's numbers in words, a table and the charts.
-std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, const io::CardCounts& c) {
+std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, const io::CardCounts& c,
+                          const CameraMap& map) {
   const nlohmann::json& cond = card["conditions"];
   std::string md = "# Silva dataset " + io::seed_folder_name(d.seed) + "\n\n";
   md += "Silva " + card["silva_version"].get<std::string>() + ", seed " + std::to_string(d.seed) + ", " +
@@ -166,12 +229,34 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
   md += "## Depth\n\n![depth histogram](card/depth.png)\n\n" + std::to_string(c.depth_no_hit) +
         " pixels hit nothing (sky or beyond camera.far); the last bin holds 64 m and farther.\n\n";
   md += "## Cameras\n\n![camera positions](card/poses.png)\n\nTop down, world X to the right, Y up; a stroke "
-        "points along each view. Colours by sequence: ";
+        "points along each view. ";
+  md += map.map ? "Under them the class map of the world within " + std::to_string(int(kMapMargin)) +
+                      " m of the cameras (each object a disc of its crown or top in the colour of its class seen from "
+                      "above, the trail and solid footprints on top; built again from the run's config). "
+                : "No class map under them: " + map.missing + ". ";
+  md += "Colours by sequence: ";
   std::map<int, std::string> order;
   for (size_t i = 0; i < d.frames.size(); ++i) order[c.sequence_of[i]] = d.frames[i].sequence;
   for (const auto& [k, s] : order) md += s + " " + kSequenceColorNames[size_t(k) % 3] + ", ";
   md.resize(md.size() - 2);
-  md += ".\n\n## Config differences from the defaults\n\n";
+  md += ".\n\n## Compared with a real dataset\n\n";
+  const nlohmann::json& rellis = card["published"]["rellis3d"];
+  md += "RELLIS-3D's published class distribution (" + rellis["unit"].get<std::string>() +
+        ", shares of its labelled points, void left out) beside this dataset's, per RELLIS-3D class the "
+        "ontology maps to";
+  md += c.lidar_points ? ":\n\n| RELLIS-3D class | RELLIS-3D points | Silva classes | Silva pixels | Silva LiDAR points |\n"
+                         "|---|---|---|---|---|\n"
+                       : ":\n\n| RELLIS-3D class | RELLIS-3D points | Silva classes | Silva pixels |\n|---|---|---|---|\n";
+  for (const auto& row : rellis["classes"]) {
+    md += "| " + row["name"].get<std::string>() + " | " + percent(row["published_share"]) + " | " +
+          row["silva_classes"].get<std::string>() + " | " + percent(row["silva_pixel_share"]) + " |";
+    if (c.lidar_points) md += " " + percent(row["silva_lidar_share"]) + " |";
+    md += "\n";
+  }
+  md += "\nSource: " + rellis["source"].get<std::string>() +
+        ". RUGD (Wigness et al., IROS 2019) is not set beside it: no per-class numbers of RUGD with a citable source "
+        "were found, and the card reads no values off published charts.\n";
+  md += "\n## Config differences from the defaults\n\n";
   if (card["config_differences"].empty()) md += "None (seed and output.dir aside).\n";
   for (const auto& [key, v] : card["config_differences"].items())
     md += "- `" + key + "`: " + v["value"].dump() + " (default " + v["default"].dump() + ")\n";
@@ -184,14 +269,15 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
 
 }  // namespace
 
-void write_card(const fs::path& run_dir) {
+void write_card(const fs::path& run_dir, const CardInputs& inputs) {
   const io::Dataset d = io::open_dataset(run_dir);
-  const io::CardCounts c = io::count_dataset(d);
-  const nlohmann::json card = card_json(d, c);
+  const io::CardCounts c = io::count_dataset(d, inputs.known ? *inputs.known : io::KnownCounts{});
+  const CameraMap map = camera_map(d, c, inputs);
+  const nlohmann::json card = card_json(d, c, map);
   io::create_folder(run_dir / "card");
-  write_charts(run_dir / "card", card, c);
+  write_charts(run_dir / "card", card, c, map);
   io::write_file_atomic(run_dir / "card.json", card.dump(2) + "\n");
-  io::write_file_atomic(run_dir / "CARD.md", card_markdown(d, card, c));
+  io::write_file_atomic(run_dir / "CARD.md", card_markdown(d, card, c, map));
 }
 
 int run_card(const fs::path& run_dir, const Reporter& reporter) {

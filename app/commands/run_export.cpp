@@ -1,5 +1,6 @@
 // `silva export` after the CLI checks: each format is written into a hidden partial folder and moved
 // into place only when complete, so an interrupted or failed export never replaces a good one.
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 
@@ -54,8 +55,15 @@ nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::
 
 int run_export(const ExportRequest& request, const Reporter& reporter) {
   const io::Dataset dataset = io::open_dataset(request.run_dir);
+  std::vector<io::ExportFormat> formats = request.formats;
+  if (request.all)
+    for (size_t i = 0; i < io::export_format_names().size(); ++i) {
+      const auto format = io::ExportFormat(i);
+      if (format == io::ExportFormat::SemanticKitti && !dataset.has("lidar")) continue;
+      if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
+    }
   const Stopwatch clock;
-  const nlohmann::json written = export_formats(dataset, request.formats, request.out_dir, request.overwrite);
+  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite);
   std::string line;
   for (const auto& w : written) {
     char buf[64];

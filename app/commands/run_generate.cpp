@@ -74,9 +74,18 @@ void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, co
   }
 }
 
+/// Writes the finished run's output.formats into <run_dir>/export/ (as silva export).
+void export_run_formats(const Config& cfg, const fs::path& run_dir, const Reporter& reporter) {
+  if (cfg.output.formats.empty()) return;
+  std::vector<io::ExportFormat> formats;
+  for (const std::string& name : cfg.output.formats) formats.push_back(io::parse_export_format(name, "output.formats"));
+  export_formats(io::open_dataset(run_dir), formats, run_dir / "export", /*overwrite=*/true);
+  reporter.note("silva: exported " + std::to_string(formats.size()) + " formats into " + (run_dir / "export").string());
+}
+
 /// Prints the run's summary: a JSON object with --json, else one line.
 void report_summary(const Reporter& reporter, const systems::CaptureStats& stats, const nlohmann::json& record,
-                    int64_t seed, const fs::path& run_dir, int skipped, size_t planned) {
+                    int64_t seed, const fs::path& run_dir, int skipped, size_t planned, double card_s) {
   const double fps = stats.wall_s > 0 ? stats.frames_written / stats.wall_s : 0.0;
   nlohmann::json summary = {{"ok", true},
                             {"seed", seed},
@@ -87,7 +96,8 @@ void report_summary(const Reporter& reporter, const systems::CaptureStats& stats
                             {"bytes_written", stats.bytes_written},
                             {"wall_s", stats.wall_s},
                             {"frames_per_s", fps},
-                            {"timings_s", record["timings_s"]}};
+                            {"timings_s", record["timings_s"]},
+                            {"card_s", card_s}};
   if (record.contains("shard")) summary["shard"] = record["shard"];
   char line[256];
   std::snprintf(line, sizeof line, "wrote %d frames (%.1f MB) in %.1f s (%.2f frames/s) to %s", stats.frames_written,
@@ -153,6 +163,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
                       " frames; continue with: silva generate --resume --out " + cfg.output.dir + " --seed " +
                       std::to_string(cfg.seed));
   }
+  double card_s = 0;
   if (request.shard) {
     record["shard"] = {{"index", request.shard->index}, {"count", request.shard->count}};
     record["manifest"] = manifest;
@@ -161,17 +172,12 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   } else {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
-    if (!cfg.output.formats.empty()) {
-      std::vector<io::ExportFormat> formats;
-      for (const std::string& name : cfg.output.formats)
-        formats.push_back(io::parse_export_format(name, "output.formats"));
-      export_formats(io::open_dataset(run_dir), formats, run_dir / "export", /*overwrite=*/true);
-      reporter.note("silva: exported " + std::to_string(formats.size()) + " formats into " +
-                    (run_dir / "export").string());
-    }
-    write_card(run_dir);
+    export_run_formats(cfg, run_dir, reporter);
+    const Stopwatch card_clock;
+    write_card(run_dir, {&stats.card, &schedule, &setup});
+    card_s = card_clock.seconds();
   }
-  report_summary(reporter, stats, record, cfg.seed, run_dir, skipped, plan.size());
+  report_summary(reporter, stats, record, cfg.seed, run_dir, skipped, plan.size(), card_s);
   return 0;
 }
 

@@ -67,6 +67,8 @@ void check_config(const LoadedConfig& loaded) {
                        " m (from camera.sensor_width_mm and camera.fov_deg)");
     }
   }
+  if (contains(c.output.formats, "semantickitti") && !contains(c.output.types, "lidar"))
+    throw InputError(where + ": output.formats has \"semantickitti\", which needs \"lidar\" in output.types");
   check_multiple(where, c.terrain.chunk_size, "terrain.vertex_spacing", c.terrain.vertex_spacing);
   check_multiple(where, c.terrain.chunk_size, "vegetation.grid_spacing", c.vegetation.grid_spacing);
   const auto& sequences = c.captures.sequences;

@@ -21,7 +21,7 @@ std::vector<ConfigKey> build_schema() {
       "rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr", "normal",
       "depth_preview", "lidar"};
   const std::vector<std::string_view> export_formats = {"coco-panoptic", "coco-instances", "cityscapes",
-                                                        "colmap", "nerfstudio"};
+                                                        "colmap", "nerfstudio", "semantickitti"};
   const std::vector<std::string_view> sequences = {"autopilot", "random", "custom"};
   using T = ValueType;
   return {
@@ -158,6 +158,10 @@ std::vector<ConfigKey> build_schema() {
       {"lidar.mount_rpy_deg", T::FloatList,
        "LiDAR rotation relative to the camera's heading, degrees [roll, pitch, yaw]", between(-360, 360), {},
        [](Config& c) -> FieldRef { return &c.lidar.mount_rpy_deg; }},
+      {"lidar.motion_distortion", T::Bool,
+       "autopilot sweeps are cast while the sensor moves along the trail at camera.autopilot_speed (each column "
+       "from its own pose; points stay in the sensor frame of each firing)",
+       {}, {}, [](Config& c) -> FieldRef { return &c.lidar.motion_distortion; }},
   };
 }
 

@@ -48,6 +48,16 @@ TEST(ConfigChecks, CustomNeedsPosesFile) {
             "");
 }
 
+TEST(ConfigChecks, SemanticKittiNeedsLidar) {
+  EXPECT_EQ(check_message([](Config& c) { c.output.formats = {"semantickitti"}; }),
+            "a.toml: output.formats has \"semantickitti\", which needs \"lidar\" in output.types");
+  EXPECT_EQ(check_message([](Config& c) {
+              c.output.formats = {"semantickitti"};
+              c.output.types = {"lidar"};
+            }),
+            "");
+}
+
 TEST(ConfigChecks, SomeSequenceIsLeft) {
   EXPECT_EQ(check_message([](Config& c) { c.captures.sequences = {}; }),
             "a.toml: captures.sequences is empty (allowed: one or more of autopilot, random, custom)");

@@ -24,10 +24,10 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
         "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance", "lidar.preset",
-        "lidar.mount_offset", "lidar.mount_rpy_deg"}) {
+        "lidar.mount_offset", "lidar.mount_rpy_deg", "lidar.motion_distortion"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 57u);
+  EXPECT_EQ(names.size(), 58u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

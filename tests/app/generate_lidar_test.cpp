@@ -164,5 +164,37 @@ TEST(GenerateLidar, SameSeedSameBytesForAnyThreadCount) {
   EXPECT_TRUE(files[0].count("random/lidar/000001.bin"));
 }
 
+TEST(GenerateLidar, LidarAloneAndMotionDistortion) {
+  const fs::path dir = fresh_test_dir();
+  std::ofstream(dir / "lidar.toml") << kConfig;
+  // The same sweeps without any camera image; then with motion distortion, which moves only autopilot sweeps.
+  const std::vector<std::vector<std::string>> runs = {
+      {"output.types=[\"semantic\",\"lidar\"]"},
+      {"output.types=[\"lidar\"]"},
+      {"output.types=[\"lidar\"]", "lidar.motion_distortion=true", "camera.autopilot_speed=20"}};
+  std::map<std::string, std::string> files[3];
+  for (size_t k = 0; k < runs.size(); ++k) {
+    std::vector<std::string> args = {"generate", "--config", (dir / "lidar.toml").string(), "--seed", "13", "--out",
+                                     (dir / ("out" + std::to_string(k))).string(), "--quiet"};
+    for (const std::string& set : runs[k]) args.insert(args.end(), {"--set", set});
+    const ProcessResult r = run_silva(args, dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    files[k] = folder_files(dir / ("out" + std::to_string(k)) / "0000000013");
+  }
+  size_t scans = 0;
+  for (const auto& [name, bytes] : files[1]) {
+    if (name.find("/lidar") == std::string::npos) continue;
+    ++scans;
+    EXPECT_EQ(files[0].at(name), bytes) << name << ": the sweep depends on the camera outputs";
+    if (name.starts_with("random/"))
+      EXPECT_EQ(files[2].at(name), bytes) << name << ": a random frame's sweep moved";
+    else if (name.ends_with(".bin"))
+      EXPECT_NE(files[2].at(name), bytes) << name << ": motion distortion left an autopilot sweep unchanged";
+  }
+  EXPECT_EQ(scans, 3u * 3u);  // three frames, each .bin, .label and .json
+  for (const auto& [name, bytes] : files[1]) EXPECT_EQ(name.find("/semantic/"), std::string::npos) << name;
+  EXPECT_TRUE(files[1].count("autopilot/camera/000000.json"));
+}
+
 }  // namespace
 }  // namespace silva::test

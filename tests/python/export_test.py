@@ -2,7 +2,8 @@
 """`silva export` read back by independent readers and compared pixel for pixel / pose for pose with the source.
 
 Usage: export_test.py SILVA WORKDIR TEST   (TEST: generate, coco-panoptic, coco-instances, cityscapes, colmap,
-nerfstudio, errors). `generate` makes the small dataset the others read (a ctest fixture).
+nerfstudio, semantickitti, errors). `generate` makes the small dataset the others read (a ctest fixture);
+semantickitti generates its own small dataset with LiDAR.
 """
 import json
 import os
@@ -61,8 +62,9 @@ def export(fmt):
     return target
 
 
-def camera(sequence, frame):
-    cam = json.load(open(source(sequence, frame, "camera", "json")))
+def camera(sequence, frame, folder=None):
+    path = os.path.join(folder, "camera", f"{frame:06d}.json") if folder else source(sequence, frame, "camera", "json")
+    cam = json.load(open(path))
     return np.array(cam["K"]), np.array(cam["camera_to_world"])
 
 
@@ -268,6 +270,99 @@ def check_nerfstudio():
     print(f"nerfstudio: {checked} depth pixels reproject through the OpenGL poses onto the contract's poses")
 
 
+def read_kitti_matrices(path, key=None):
+    """3x4 matrices of a KITTI text file as 4x4 arrays: every line, or the line starting with `key:`."""
+    rows = []
+    for line in open(path):
+        if key is None:
+            values = line.split()
+        elif line.startswith(key + ":"):
+            values = line.split()[1:]
+        else:
+            continue
+        m = np.eye(4)
+        m[:3, :] = np.array(list(map(float, values))).reshape(3, 4)
+        rows.append(m)
+    return rows
+
+
+def check_semantickitti():
+    work = os.path.join(WORK, "kitti")
+    shutil.rmtree(work, ignore_errors=True)
+    seed = 31
+    silva("generate", "--seed", str(seed), "--out", work, "--quiet",
+          "--set", "output.resolution=64x48", "--set", "captures.autopilot_points=2",
+          "--set", "captures.autopilot_yaws=[0.0]", "--set", "captures.random_count=2",
+          "--set", "world.extent=128", "--set", "world.render_distance=48", "--set", "trail.control_points=6",
+          "--set", "camera.far=40", "--set", 'output.types=["rgb","semantic","lidar"]',
+          "--set", 'output.formats=["semantickitti"]')
+    dataset = os.path.join(work, f"{seed:010d}")
+    during_run = os.path.join(dataset, "export", "semantickitti")
+    out = os.path.join(work, "export", "semantickitti")
+    silva("export", dataset, "--format", "semantickitti", "--out", os.path.join(work, "export"), "--quiet")
+    manifest = json.load(open(os.path.join(dataset, "manifest.json")))
+    sensor = manifest["sensors"]["lidar"]
+    ontology = json.load(open(os.path.join(dataset, "ontology.json")))["classes"]
+    to_kitti = {c["id"]: c["semantic_kitti_id"] for c in ontology}
+    lut = np.full(1 << 16, -1, dtype=np.int64)
+    for silva_id, kitti_id in to_kitti.items():
+        lut[silva_id] = kitti_id
+    numbers = {"autopilot": "00", "random": "01", "custom": "02"}
+    counts, scans = {}, 0
+    for sequence, frames in manifest["frames"].items():
+        seq = os.path.join(out, "sequences", numbers[sequence])
+        src = os.path.join(dataset, sequence)
+        # Poses round-trip: camera 0's pose times poses.txt's line i is camera i's pose; Tr is the LiDAR mount.
+        poses = read_kitti_matrices(os.path.join(seq, "poses.txt"))
+        tr = read_kitti_matrices(os.path.join(seq, "calib.txt"), "Tr")[0]
+        assert np.allclose(tr, np.array(sensor["lidar_to_camera"]), atol=1e-9), "Tr is not the LiDAR mount"
+        assert len(poses) == frames
+        first = camera(sequence, 0, src)[1]
+        times = [float(t) for t in open(os.path.join(seq, "times.txt"))]
+        assert np.allclose(times, np.arange(frames) / sensor["rotation_hz"], atol=1e-6), times
+        for f in range(frames):
+            k, c2w = camera(sequence, f, src)
+            assert np.allclose(first @ poses[f], c2w, atol=1e-6), f"{sequence}/{f}: poses.txt does not give the camera"
+            scan = np.fromfile(os.path.join(seq, "velodyne", f"{f:06d}.bin"), dtype="<f4").reshape(-1, 4)
+            source_scan = np.fromfile(os.path.join(src, "lidar", f"{f:06d}.bin"), dtype="<f4").reshape(-1, 4)
+            assert np.array_equal(scan, source_scan) and len(scan) > 0
+            label = np.fromfile(os.path.join(seq, "labels", f"{f:06d}.label"), dtype="<u4")
+            source = np.fromfile(os.path.join(src, "lidar_labels", f"{f:06d}.label"), dtype="<u4")
+            assert label.shape[0] == scan.shape[0] == source.shape[0]
+            assert np.array_equal(label & 0xFFFF, lut[source & 0xFFFF]), f"{sequence}/{f}: classes are not the mapping"
+            assert np.array_equal(label >> 16, source >> 16), f"{sequence}/{f}: instances differ"
+            for kid, n in zip(*np.unique(label & 0xFFFF, return_counts=True)):
+                counts[int(kid)] = counts.get(int(kid), 0) + int(n)
+            assert os.path.samefile(os.path.join(seq, "image_2", f"{f:06d}.png"), os.path.join(src, "rgb", f"{f:06d}.png"))
+            with open(os.path.join(seq, "labels", f"{f:06d}.label"), "rb") as a, \
+                    open(os.path.join(during_run, "sequences", numbers[sequence], "labels", f"{f:06d}.label"), "rb") as b:
+                assert a.read() == b.read(), "output.formats differs from silva export"
+            scans += 1
+    try:
+        import yaml
+    except ImportError:
+        print("semantickitti: SKIP the semantic-kitti.yaml read-back (python3-yaml is not importable)")
+    else:
+        doc = yaml.safe_load(open(os.path.join(out, "semantic-kitti.yaml")))
+        assert set(doc["labels"]) == set(to_kitti.values()) | {0}
+        total = sum(counts.values())
+        for kid in doc["labels"]:
+            assert abs(doc["content"][kid] - counts.get(kid, 0) / total) < 1e-8, (kid, doc["content"][kid])
+        assert doc["learning_map"][0] == 0 and doc["learning_ignore"][0] is True
+        assert sorted(doc["learning_map"].values()) == list(range(len(doc["labels"])))
+        assert all(doc["learning_map_inv"][t] == k for k, t in doc["learning_map"].items())
+        assert doc["split"]["train"] == sorted(int(numbers[s]) for s in manifest["frames"])
+    r = silva("export", DATASET, "--format", "all", "--out", os.path.join(work, "all"), "--json")
+    assert [e["format"] for e in json.loads(r.stdout)["exports"]] == \
+        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio"], "all: semantickitti without lidar"
+    r = silva("export", DATASET, "--format", "semantickitti", "--out", os.path.join(work, "none"), expect=2)
+    assert "needs output type 'lidar'" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    r = silva("generate", "--seed", "1", "--out", os.path.join(work, "none"), "--set", 'output.formats=["semantickitti"]',
+              expect=2)
+    assert "needs \"lidar\" in output.types" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    print(f"semantickitti: {scans} scans and labels equal the source through the ontology's mapping; poses round-trip")
+
+
 def check_errors():
     r = silva("export", WORK, "--format", "colmap", expect=2)
     assert "not a Silva dataset" in r.stderr and r.stderr.count("\n") == 1, r.stderr
@@ -292,5 +387,5 @@ def check_errors():
 
 CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,
           "cityscapes": check_cityscapes, "colmap": check_colmap, "nerfstudio": check_nerfstudio,
-          "errors": check_errors}
+          "semantickitti": check_semantickitti, "errors": check_errors}
 CHECKS[TEST]()

@@ -54,9 +54,12 @@ def check_loader():
 
 def check_card():
     during_run = open(os.path.join(DATASET, "card.json")).read()
+    poses_during_run = open(os.path.join(DATASET, "card", "poses.png"), "rb").read()
     r = subprocess.run([SILVA, "card", DATASET, "--quiet"], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
+    # generate counts its frames in memory and maps its own world; card reads the PNGs and rebuilds the world.
     assert open(os.path.join(DATASET, "card.json")).read() == during_run, "generate's card differs from silva card's"
+    assert open(os.path.join(DATASET, "card", "poses.png"), "rb").read() == poses_during_run, "class maps differ"
     card = json.load(open(os.path.join(DATASET, "card.json")))
     ds = SilvaDataset(DATASET)
     pixels = np.zeros(256, dtype=np.int64)
@@ -76,6 +79,13 @@ def check_card():
         assert abs(row["fraction"] - pixels[row["id"]] / pixels.sum()) < 1e-12
         assert row["instances"] == instances[row["id"]], row
     assert [b["pixels"] for b in card["depth_histogram"]] == depth.tolist()
+    assert card["class_map"] is not None and card["class_map"]["width"] > 0
+    rellis = card["published"]["rellis3d"]["classes"]
+    assert abs(sum(r["published_share"] for r in rellis) - 1) < 1e-9
+    ontology = json.load(open(os.path.join(DATASET, "ontology.json")))["classes"]
+    for row in rellis:
+        ids = {c["id"] for c in ontology if c["rellis"] == row["name"]}
+        assert abs(row["silva_pixel_share"] - sum(pixels[i] for i in ids) / pixels.sum()) < 1e-12, row
     for chart in ("classes", "depth", "instance_sizes", "poses"):
         assert cv2.imread(os.path.join(DATASET, "card", chart + ".png")) is not None
     assert os.path.isfile(os.path.join(DATASET, "CARD.md"))

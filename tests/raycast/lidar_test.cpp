@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 
+#include <Eigen/Geometry>
+
 #include "tests/raycast/test_meshes.hpp"
 
 namespace silva::raycast {
@@ -143,6 +145,44 @@ TEST(Lidar, NoiseAndDropoutAreSeededAndTheSameForAnyThreadCount) {
   }
   ASSERT_GT(n, 500);
   EXPECT_NEAR(std::sqrt(sum2 / n), 0.05, 0.005);
+}
+
+TEST(Lidar, MotionDistortionShiftsEachPointBySpeedTimesItsTime) {
+  // A wall facing the sensor at x = 10; the sensor at (0, 0, 2) moves along +x at 5 m/s during a 10 Hz sweep.
+  Mesh wall = test::square(400.0f, Role::Obstacle);
+  Affine3f wall_pose = test::placed({10.0f, 0.0f, 0.0f});
+  wall_pose.block<3, 3>(0, 0) << 0, 0, -1, 0, 1, 0, 1, 0, 0;  // the square's +z (its front) turns to -x
+  RayScene scene;
+  const RayInstance instances[] = {{&wall, wall_pose, 5}};
+  scene.add_group(0, instances);
+  scene.commit();
+  const LidarPreset preset = sixteen_beams();
+  const double speed = 5.0;
+  SweepPose still = at_two_metres();
+  SweepPose moving = still;
+  moving.end = SweepEnd{Mat3d::Identity(), still.position + Vec3d(speed / preset.rotation_hz, 0, 0)};
+  const std::vector<LidarPoint> fixed = cast_sweep(scene, preset, still, {});
+  const std::vector<LidarPoint> moved = cast_sweep(scene, preset, moving, {});
+  ASSERT_GT(moved.size(), 1000u);
+  ASSERT_EQ(moved.size(), fixed.size());
+  for (size_t i = 0; i < moved.size(); ++i) {
+    const LidarPoint& p = moved[i];
+    ASSERT_EQ(p.role, Role::Obstacle);
+    // Still: every wall point at x = 10. Moving: fired from x = v t, so 10 - v t ahead in the firing frame.
+    EXPECT_NEAR(fixed[i].position.x(), 10.0, 1e-4);
+    EXPECT_NEAR(p.position.x(), 10.0 - speed * double(p.time), 1e-4) << "column " << p.column;
+    // The beam's direction is the sensor's own: y and z scale with the shorter range.
+    EXPECT_NEAR(p.position.y() / p.position.x(), fixed[i].position.y() / fixed[i].position.x(), 1e-5);
+    EXPECT_NEAR(p.position.z() / p.position.x(), fixed[i].position.z() / fixed[i].position.x(), 1e-5);
+  }
+  // A turning sensor: a yaw of 36 degrees over the sweep turns column c's beam by 36 c / columns degrees.
+  SweepPose turning = still;
+  turning.end = SweepEnd{Eigen::AngleAxisd(36 * kDeg, Vec3d::UnitZ()).toRotationMatrix(), still.position};
+  for (const LidarPoint& p : cast_sweep(scene, preset, turning, {})) {
+    const double yaw = 36 * kDeg * p.column / preset.columns;
+    const Vec3d world = Eigen::AngleAxisd(yaw, Vec3d::UnitZ()) * p.position.cast<double>();
+    EXPECT_NEAR(world.x(), 10.0, 1e-4) << "column " << p.column;  // every point still lies on the wall
+  }
 }
 
 }  // namespace

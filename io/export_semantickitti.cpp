@@ -1,0 +1,177 @@
+// SemanticKITTI export (CONTRACT.md "Export formats"): sequences/NN/ with velodyne/ (the KITTI scans, linked),
+// labels/ (Silva's class id in the low 16 bits replaced by the ontology's SemanticKITTI id, the instance in the
+// high 16 bits kept), calib.txt and poses.txt (Silva's, already in KITTI form), times.txt and image_2/ (the
+// RGB images when the dataset has them: calib's P2 is the capture camera). Sequence numbers are fixed per Silva
+// sequence: autopilot 00, random 01, custom 02. semantic-kitti.yaml is the label map the semantic-kitti-api
+// reads (labels, color_map, content, learning_map, learning_map_inv, learning_ignore, split).
+#include <array>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/export_formats.hpp"
+#include "io/json_read.hpp"
+
+namespace silva::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Silva class id -> SemanticKITTI label id and the colour of the first role with that id (role order).
+struct KittiMap {
+  std::array<int, 256> kitti{};                    ///< -1 for a class id no role uses.
+  std::map<int, std::string> names;                ///< SemanticKITTI id -> its name.
+  std::map<int, std::array<uint8_t, 3>> colors;    ///< SemanticKITTI id -> RGB of its first Silva class.
+};
+
+/// The ontology's SemanticKITTI mapping; InputError when roles sharing a class id map to different ids.
+KittiMap kitti_map(const Dataset& d) {
+  KittiMap m;
+  m.kitti.fill(-1);
+  for (const OntologyClass& c : d.ontology.classes) {
+    int& k = m.kitti[c.id];
+    if (k >= 0 && k != c.semantic_kitti_id)
+      throw InputError((d.dir / "ontology.json").string() + ": class id " + std::to_string(c.id) +
+                       " maps to SemanticKITTI ids " + std::to_string(k) + " and " +
+                       std::to_string(c.semantic_kitti_id) + "; a SemanticKITTI export needs one per class id");
+    k = c.semantic_kitti_id;
+    m.names.emplace(k, c.semantic_kitti.empty() ? "unlabeled" : c.semantic_kitti);
+    m.colors.emplace(k, c.color);
+  }
+  m.names.emplace(0, "unlabeled");
+  m.colors.emplace(0, std::array<uint8_t, 3>{0, 0, 0});
+  return m;
+}
+
+/// The fixed SemanticKITTI sequence number of a Silva sequence.
+int sequence_number(const std::string& sequence) {
+  static const std::map<std::string, int> numbers = {{"autopilot", 0}, {"random", 1}, {"custom", 2}};
+  return numbers.at(sequence);
+}
+
+std::string two_digits(int n) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%02d", n);
+  return buf;
+}
+
+/// InputError naming `path` unless it is a file of the dataset.
+void require_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
+}
+
+/// Rewrites frame `f`'s labels into `out` and counts its points per SemanticKITTI id.
+void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, const fs::path& out,
+                  std::map<int, uint64_t>& counts) {
+  const fs::path scan = d.file(f, "lidar", "bin"), label = d.file(f, "lidar_labels", "label");
+  require_file(scan);
+  require_file(label);
+  std::error_code ec;
+  const uintmax_t scan_bytes = fs::file_size(scan, ec);
+  if (ec || scan_bytes % 16) throw InputError(scan.string() + ": not a KITTI scan (float32 x, y, z, intensity)");
+  std::string bytes = read_text_file(label);
+  if (bytes.size() != scan_bytes / 4)
+    throw InputError(label.string() + ": " + std::to_string(bytes.size() / 4) + " labels for " +
+                     std::to_string(scan_bytes / 16) + " points of " + scan.filename().string());
+  for (size_t i = 0; i < bytes.size(); i += 4) {
+    uint32_t v;
+    std::memcpy(&v, bytes.data() + i, 4);
+    const uint32_t cls = v & 0xFFFFu;
+    if (cls > 255 || map.kitti[cls] < 0)
+      throw InputError(label.string() + ": point " + std::to_string(i / 4) + " has class id " + std::to_string(cls) +
+                       ", which ontology.json does not hold");
+    ++counts[map.kitti[cls]];
+    v = (v & 0xFFFF0000u) | uint32_t(map.kitti[cls]);
+    std::memcpy(bytes.data() + i, &v, 4);
+  }
+  write_file_atomic(out, bytes);
+}
+
+/// semantic-kitti.yaml: the label map in the semantic-kitti-api's form. Training ids are 0 (unlabeled,
+/// ignored) and 1, 2, ... for the other SemanticKITTI ids the ontology uses, ascending; content is each id's
+/// share of the exported points.
+std::string label_yaml(const KittiMap& map, const std::map<int, uint64_t>& counts, const std::set<int>& sequences) {
+  uint64_t total = 0;
+  for (const auto& [id, n] : counts) total += n;
+  std::string y = "# SemanticKITTI label map of a Silva export (semantic-kitti-api form); colours are BGR.\n"
+                  "name: \"silva\"\nlabels:\n";
+  for (const auto& [id, name] : map.names) y += "  " + std::to_string(id) + ": \"" + name + "\"\n";
+  y += "color_map:\n";
+  for (const auto& [id, c] : map.colors)
+    y += "  " + std::to_string(id) + ": [" + std::to_string(c[2]) + ", " + std::to_string(c[1]) + ", " +
+         std::to_string(c[0]) + "]\n";
+  y += "content: # share of the exported points\n";
+  for (const auto& [id, name] : map.names) {
+    const auto it = counts.find(id);
+    char share[32];
+    std::snprintf(share, sizeof share, "%.9g", total && it != counts.end() ? double(it->second) / double(total) : 0.0);
+    y += "  " + std::to_string(id) + ": " + share + "\n";
+  }
+  std::map<int, int> train;
+  int next = 1;
+  for (const auto& [id, name] : map.names) train[id] = id == 0 ? 0 : next++;
+  y += "learning_map:\n";
+  for (const auto& [id, t] : train) y += "  " + std::to_string(id) + ": " + std::to_string(t) + "\n";
+  y += "learning_map_inv:\n";
+  for (const auto& [id, t] : train) y += "  " + std::to_string(t) + ": " + std::to_string(id) + "\n";
+  y += "learning_ignore:\n";
+  for (const auto& [id, t] : train) y += "  " + std::to_string(t) + ": " + (t == 0 ? "True" : "False") + "\n";
+  y += "split: # sequence numbers: autopilot 0, random 1, custom 2\n  train:\n";
+  for (int s : sequences) y += "    - " + std::to_string(s) + "\n";
+  y += "  valid: []\n  test: []\n";
+  return y;
+}
+
+}  // namespace
+
+void export_semantickitti(const Dataset& d, const fs::path& out) {
+  d.require("lidar", "semantickitti");
+  const KittiMap map = kitti_map(d);
+  const bool images = d.has("rgb");
+  double period = 0;
+  try {
+    period = 1.0 / d.manifest.at("sensors").at("lidar").at("rotation_hz").get<double>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError((d.dir / "manifest.json").string() + ": no sensors.lidar.rotation_hz for a dataset with lidar");
+  }
+  std::map<std::string, std::string> times;
+  std::set<int> numbers;
+  for (const DatasetFrame& f : d.frames) {
+    const fs::path seq = out / "sequences" / two_digits(sequence_number(f.sequence));
+    if (numbers.insert(sequence_number(f.sequence)).second) {
+      create_folder(seq / "velodyne");
+      create_folder(seq / "labels");
+      if (images) create_folder(seq / "image_2");
+      for (const char* name : {"calib.txt", "poses.txt"}) {
+        require_file(d.dir / f.sequence / name);
+        link_or_copy(d.dir / f.sequence / name, seq / name);
+      }
+    }
+    char line[32];
+    std::snprintf(line, sizeof line, "%.6e\n", f.frame * period);
+    times[f.sequence] += line;
+  }
+  for (const auto& [sequence, text] : times)
+    write_file_atomic(out / "sequences" / two_digits(sequence_number(sequence)) / "times.txt", text);
+  std::vector<std::map<int, uint64_t>> counts(d.frames.size());
+  for_each_frame(d, [&](size_t i) {
+    const DatasetFrame& f = d.frames[i];
+    const fs::path seq = out / "sequences" / two_digits(sequence_number(f.sequence));
+    char name[16];
+    std::snprintf(name, sizeof name, "%06d", f.frame);
+    write_labels(d, f, map, seq / "labels" / (std::string(name) + ".label"), counts[i]);  // checks the scan too
+    link_or_copy(d.file(f, "lidar", "bin"), seq / "velodyne" / (std::string(name) + ".bin"));
+    if (images) link_or_copy(d.file(f, "rgb", "png"), seq / "image_2" / (std::string(name) + ".png"));
+  });
+  std::map<int, uint64_t> total;
+  for (const auto& c : counts)
+    for (const auto& [id, n] : c) total[id] += n;
+  write_file_atomic(out / "semantic-kitti.yaml", label_yaml(map, total, numbers));
+}
+
+}  // namespace silva::io
