@@ -195,6 +195,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   counts.instances = d.has("instance");
   counts.normals = d.has("normal");
   if (d.has("lidar")) counts.lidar = LidarTally{};
+  std::vector<raycast::RayHit> hits;  // kept across frames: a frame's hits are tens of MB
   Progress progress(reporter, int(chosen.size()), "frames");
   for (size_t k = 0; k < chosen.size(); ++k) {
     const io::DatasetFrame& f = d.frames[chosen[k]];
@@ -203,7 +204,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
     const auto chunks = cache.require(setup.world, systems::capture_chunks(camera, setup.world.chunk_size(), lidar_reach));
     rays.sync(chunks, builder, loaded.config.render.ground_cover_distance);
     const std::vector<uint32_t> pixels = sample_pixels(camera.width, camera.height, request.sample, d.seed, f.global_index);
-    std::vector<raycast::RayHit> hits(pixels.size());
+    hits.resize(pixels.size());
     raycast::cast_pixels(*rays.scene, camera, pixels, hits);
     const VerifyTally tally = compare_frame(truth, pixels, hits, d.ontology, options);
     counts.pixels.merge(tally);

@@ -92,6 +92,7 @@ nlohmann::json verify_json(const io::Dataset& d, const VerifyRequest& r, const V
           {"seed", d.seed},
           {"frames_in_dataset", d.frames.size()},
           {"frames_checked", c.frames.size()},
+          {"render_lod", d.manifest.at("config").at("render").at("lod")},
           {"sample", r.sample},
           {"pixels", ip + sp},
           {"thresholds",
@@ -144,6 +145,11 @@ std::string markdown_verdict(const nlohmann::json& v) {
   md += "| hit pixels with depth within " + number(th["depth_tolerance_percent"].get<double>()) + " % | ≥ " +
         number(th["depth_within_percent"].get<double>()) + " % | " +
         percent(v["depth"]["within_tolerance"].get<double>()) + " | " + pass(verdict["depth"].get<bool>()) + " |\n\n";
+  if (v["render_lod"].get<bool>())
+    md += "The dataset was rendered with `render.lod = true`: what the rasteriser drew at a coarser level (the "
+          "terrain's beyond about 34 m, assets by their size on screen) has the labels of full detail but differs "
+          "from the full-detail world in depth by its simplification error, which the depth check counts; "
+          "`render.lod = false` renders full detail everywhere.\n\n";
   md += "Interior pixels are those whose 3×3 neighbourhood holds one class in the semantic PNG; the others are "
         "silhouette pixels, reported apart (a sub-pixel edge or an alpha texel boundary may fall on either side "
         "of a pixel centre). Class agreement at silhouettes: " +
@@ -155,14 +161,14 @@ std::string markdown_verdict(const nlohmann::json& v) {
 /// VERIFY.md's per-class table and interior disagreements.
 std::string markdown_classes(const nlohmann::json& cls) {
   std::string md = "## Classes\n\n| id | class | interior pixels | interior agreement | silhouette pixels | "
-                   "silhouette agreement | depth within tolerance |\n|---|---|---|---|---|---|---|\n";
+                   "silhouette agreement | depth within tolerance, of hit pixels |\n|---|---|---|---|---|---|---|\n";
   for (const auto& row : cls["by_class"])
     md += "| " + std::to_string(row["id"].get<int>()) + " | " + row["name"].get<std::string>() + " | " +
           std::to_string(row["interior_pixels"].get<uint64_t>()) + " | " +
           percent(row["interior_agreement"].get<double>()) + " | " +
           std::to_string(row["silhouette_pixels"].get<uint64_t>()) + " | " +
           percent(row["silhouette_agreement"].get<double>()) + " | " + percent(row["depth_within"].get<double>()) +
-          " |\n";
+          " of " + std::to_string(row["depth_hit_pixels"].get<uint64_t>()) + " |\n";
   if (!cls["interior_confusion"].empty()) {
     md += "\nInterior disagreements (class in the file → class the ray caster hit: pixels):";
     for (const auto& e : cls["interior_confusion"])
