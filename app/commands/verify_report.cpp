@@ -184,8 +184,8 @@ std::string markdown_classes(const nlohmann::json& cls) {
 std::string markdown_depth(const nlohmann::json& v) {
   const nlohmann::json& depth = v["depth"];
   const nlohmann::json& rel = depth["relative_error"];
-  std::string md = "\n## Depth\n\nFrom `" + depth["source"].get<std::string>() +
-                   "/`; relative error |z_ray − z_file| / z_file where both hit: p50 " + number(rel["p50"].get<double>()) +
+  std::string md = "\n## Depth\n\nFrom the `" + depth["source"].get<std::string>() +
+                   "` images; relative error |z_ray − z_file| / z_file where both hit: p50 " + number(rel["p50"].get<double>()) +
                    ", p99 " + number(rel["p99"].get<double>()) + ", p99.9 " + number(rel["p99_9"].get<double>()) +
                    ", max " + number(rel["max"].get<double>()) + ". " + std::to_string(depth["hit_pixels"].get<uint64_t>()) +
                    " hit pixels; " + std::to_string(depth["file_only"].get<uint64_t>()) +
