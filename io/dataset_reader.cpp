@@ -1,6 +1,7 @@
 #include "io/dataset_reader.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
 
 #include <opencv2/imgcodecs.hpp>
@@ -79,6 +80,13 @@ cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
     throw InputError(path.string() + ": " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
                      ", not the frame's " + std::to_string(like.cols) + "x" + std::to_string(like.rows));
   return image;
+}
+
+cv::Mat read_depth_exr(const fs::path& path, const cv::Mat& like) {
+  // OpenCV reads the variable when it first decodes an EXR; Silva's own files are the only EXRs it reads.
+  static const bool enabled = setenv("OPENCV_IO_ENABLE_OPENEXR", "1", 1) == 0;
+  (void)enabled;
+  return read_image(path, CV_32FC1, like);
 }
 
 std::vector<InstanceEntry> read_instance_table(const fs::path& path) {

@@ -50,6 +50,10 @@ Dataset open_dataset(const std::filesystem::path& dir);
 /// when `like` is not empty, not of `like`'s size.
 cv::Mat read_image(const std::filesystem::path& path, int type, const cv::Mat& like = {});
 
+/// Reads depth_exr/NNNNNN.exr (one float32 channel, metres) through OpenCV's OpenEXR codec, which this
+/// enables for the process (OPENCV_IO_ENABLE_OPENEXR) on first use; errors as read_image.
+cv::Mat read_depth_exr(const std::filesystem::path& path, const cv::Mat& like = {});
+
 /// Reads instance/NNNNNN.json: the per-frame instance table (index, instance_id, class_id); InputError
 /// unless the indices are 1, 2, ... in order (CONTRACT.md).
 std::vector<InstanceEntry> read_instance_table(const std::filesystem::path& path);

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <map>
 
+#include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/label_images.hpp"
 
 namespace silva::io {
@@ -30,7 +32,33 @@ std::string matrix_line(const char* name, const Eigen::Matrix<double, 3, 4>& m) 
   return line + "\n";
 }
 
+/// The file's bytes as `n` records of `record` bytes each; InputError unless the size is a whole multiple.
+std::string read_records(const std::filesystem::path& path, size_t record, const char* what, size_t& n) {
+  std::string bytes = limits::read_input_file(path, what);
+  if (bytes.size() % record != 0)
+    throw InputError(path.string() + ": " + std::to_string(bytes.size()) + " bytes, not a whole number of " +
+                     std::to_string(record) + "-byte records (" + what + ")");
+  n = bytes.size() / record;
+  return bytes;
+}
+
 }  // namespace
+
+std::vector<Vec3f> read_kitti_scan(const std::filesystem::path& path) {
+  size_t n = 0;
+  const std::string bytes = read_records(path, 16, "KITTI scan", n);
+  std::vector<Vec3f> points(n);
+  for (size_t i = 0; i < n; ++i) std::memcpy(points[i].data(), bytes.data() + 16 * i, 12);
+  return points;
+}
+
+std::vector<uint32_t> read_semantic_kitti_labels(const std::filesystem::path& path) {
+  size_t n = 0;
+  const std::string bytes = read_records(path, 4, "SemanticKITTI labels", n);
+  std::vector<uint32_t> labels(n);
+  std::memcpy(labels.data(), bytes.data(), 4 * n);
+  return labels;
+}
 
 std::vector<uint8_t> kitti_scan(std::span<const LidarPoint> points) {
   std::vector<uint8_t> out;

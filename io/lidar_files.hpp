@@ -2,6 +2,7 @@
 /// @file LiDAR files in the KITTI / SemanticKITTI layouts (CONTRACT.md "LiDAR"): scans, labels with
 /// their instance table, and a sequence's calib.txt and poses.txt.
 #include <cstdint>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +15,13 @@ namespace silva::io {
 
 /// A KITTI velodyne scan: per point float32 x, y, z, intensity, little-endian, no header.
 std::vector<uint8_t> kitti_scan(std::span<const LidarPoint> points);
+
+/// Reads a KITTI scan file: the points' x, y, z (sensor frame; intensities dropped). InputError naming
+/// the file when it is missing, unreadable, too large or not a whole number of 16-byte points.
+std::vector<Vec3f> read_kitti_scan(const std::filesystem::path& path);
+
+/// Reads a SemanticKITTI .label file: one uint32 per point. InputError as read_kitti_scan.
+std::vector<uint32_t> read_semantic_kitti_labels(const std::filesystem::path& path);
 
 /// A scan's SemanticKITTI labels and the table of the instances they number.
 struct LidarLabels {

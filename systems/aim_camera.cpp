@@ -17,6 +17,10 @@ namespace silva::systems {
 /// Radius around the camera whose objects may cast shadows into its view (metres).
 constexpr double kShadowCasterReach = 0.25 * render::kShadowExtent;
 
+std::vector<ChunkCoord> capture_chunks(const Camera& camera, double chunk_size, double lidar_reach) {
+  return world::chunks_for_view(camera, chunk_size, std::max(kShadowCasterReach, lidar_reach));
+}
+
 void install_aim_camera(ecs::World& world) {
   world.set_resource(CaptureQueue{});
   world.set_resource(ViewChunks{});
@@ -36,7 +40,7 @@ void install_aim_camera(ecs::World& world) {
         // A LiDAR sees all around: the disc out to its range, when it is selected.
         const CaptureSettings& settings = sys.resource<const CaptureSettings>();
         const double lidar_reach = settings.outputs.has(io::OutputType::Lidar) ? settings.lidar.max_range : 0.0;
-        view.coords = world::chunks_for_view(camera, chunk_size, std::max(kShadowCasterReach, lidar_reach));
+        view.coords = capture_chunks(camera, chunk_size, lidar_reach);
       });
 }
 

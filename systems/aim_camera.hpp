@@ -1,8 +1,17 @@
 #pragma once
 /// @file Stream phase, first step: the frame's camera and the chunks its view needs (system "aim_camera").
+#include <vector>
+
+#include "core/camera.hpp"
+#include "core/types.hpp"
 #include "ecs/world.hpp"
 
 namespace silva::systems {
+
+/// The chunks a capture streams for a view: those meeting its frustum plus the disc whose objects
+/// may cast shadows into it, or the disc out to `lidar_reach` (the LiDAR's max range; 0 without one)
+/// when that is larger. What the frame's scene holds, so `silva verify` rebuilds exactly these.
+std::vector<ChunkCoord> capture_chunks(const Camera& camera, double chunk_size, double lidar_reach);
 
 /// Registers "aim_camera" (phase Stream): makes the next camera of the CaptureQueue resource active
 /// (none when the queue is done) and sets the ViewChunks resource to the chunks its view needs:

@@ -24,11 +24,11 @@ constexpr std::pair<const char*, Handler (*)(CLI::App&)> kCommands[] = {
     {"validate", add_validate_command}, {"version", add_version_command},
     {"assets", add_assets_command},     {"merge", add_merge_command},
     {"export", add_export_command},     {"card", add_card_command},
-    {"bench", add_bench_command},       {"profile", add_profile_command},
-    {"view", add_view_command},
+    {"verify", add_verify_command},     {"bench", add_bench_command},
+    {"profile", add_profile_command},   {"view", add_view_command},
 };
 
-/// Exit codes (CONTRACT.md "Command line").
+/// Exit codes (CONTRACT.md "Command line"; `silva verify` adds 4, a dataset below its thresholds).
 constexpr int kExitInternal = 1, kExitBadInput = 2, kExitIo = 3, kExitInterrupted = 130;
 
 /// True when --json appears among the arguments (used to report errors as JSON too).
@@ -78,7 +78,8 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", version_line());
   app.footer(
-      "Exit codes: 0 ok, 1 internal error, 2 bad input, 3 I/O failure, 130 interrupted.\n"
+      "Exit codes: 0 ok, 1 internal error, 2 bad input, 3 I/O failure, 4 verify: dataset below its thresholds,\n"
+      "130 interrupted.\n"
       "Data files are found through $SILVA_DATA, else the folder compiled in.\n"
       "Examples:\n"
       "  silva generate --config configs/demo.toml --overwrite\n"

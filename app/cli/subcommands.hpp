@@ -25,6 +25,8 @@ Handler add_merge_command(CLI::App& root);
 Handler add_export_command(CLI::App& root);
 /// `silva card` (app/commands/cmd_card.cpp).
 Handler add_card_command(CLI::App& root);
+/// `silva verify` (app/commands/cmd_verify.cpp).
+Handler add_verify_command(CLI::App& root);
 /// `silva bench` (app/commands/cmd_bench.cpp).
 Handler add_bench_command(CLI::App& root);
 /// `silva view` (app/commands/cmd_view.cpp).

@@ -78,6 +78,19 @@ struct ExportRequest {
   bool overwrite = false;                  ///< --overwrite: replace an existing <out_dir>/<format>/.
 };
 
+/// `silva verify DIR`: re-cast frames of a finished dataset with the ray caster and compare.
+struct VerifyRequest {
+  std::filesystem::path run_dir;    ///< <output.dir>/<seed>/.
+  int frames = 8;                   ///< --frames N: frames checked (all when the dataset has fewer).
+  double sample = 0.25;             ///< --sample F: share of each frame's pixels cast, in (0, 1].
+  double min_class = 99.9;          ///< --min-class: % of interior pixels whose class must agree.
+  double min_depth = 99.9;          ///< --min-depth: % of hit pixels whose depth must agree.
+  double depth_tolerance = 0.1;     ///< --depth-tolerance: relative depth error (%) that still agrees.
+};
+
+/// Exit code of `silva verify` when the dataset does not meet the thresholds (CONTRACT.md).
+inline constexpr int kExitVerifyFailed = 4;
+
 /// `silva bench`: the end-to-end benchmark harness.
 struct BenchRequest {
   bool quick = false;                 ///< --quick: a short subset.
@@ -137,6 +150,9 @@ struct CardInputs {
 void write_card(const std::filesystem::path& run_dir, const CardInputs& inputs = {});
 /// `silva card`: write_card and report; returns the exit code. Throws InputError / IoError.
 int run_card(const std::filesystem::path& run_dir, const Reporter& reporter);
+/// Verifies a finished dataset, writes DIR/verify.json and DIR/VERIFY.md; returns 0 when it meets the
+/// thresholds, kExitVerifyFailed when not. Throws InputError / IoError.
+int run_verify(const VerifyRequest& request, const Reporter& reporter);
 /// Runs the benchmark harness; returns the exit code. Throws InputError / IoError.
 int run_bench(const BenchRequest& request, const Reporter& reporter);
 /// Serves the view until Ctrl-C (then throws Interrupted: exit 130). Throws InputError / IoError.
