@@ -29,7 +29,7 @@ CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::Pla
   stop_if_interrupted();
   static int run_number = 0;
   const systems::CaptureSettings settings{ctx.setup.preset, ctx.setup.ontology, io::OutputSelection::from_names(types),
-                                          ctx.scratch / ("run-" + std::to_string(++run_number))};
+                                          ctx.scratch / ("run-" + std::to_string(++run_number)), {}};
   CaptureRun run;
   run.width = frames.empty() ? 0 : frames.front().camera.width;  // frames may be planned at another size
   run.height = frames.empty() ? 0 : frames.front().camera.height;

@@ -186,10 +186,11 @@ TEST(GenerateLidar, LidarAloneAndMotionDistortion) {
     if (name.find("/lidar") == std::string::npos) continue;
     ++scans;
     EXPECT_EQ(files[0].at(name), bytes) << name << ": the sweep depends on the camera outputs";
-    if (name.starts_with("random/"))
+    if (name.starts_with("random/")) {
       EXPECT_EQ(files[2].at(name), bytes) << name << ": a random frame's sweep moved";
-    else if (name.ends_with(".bin"))
+    } else if (name.ends_with(".bin")) {
       EXPECT_NE(files[2].at(name), bytes) << name << ": motion distortion left an autopilot sweep unchanged";
+    }
   }
   EXPECT_EQ(scans, 3u * 3u);  // three frames, each .bin, .label and .json
   for (const auto& [name, bytes] : files[1]) EXPECT_EQ(name.find("/semantic/"), std::string::npos) << name;
