@@ -174,6 +174,6 @@ Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
   return bumped_normal(s.normal, Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h));
 }
 
-float fallen_leaf_cover(Season season) { return season == Season::Autumn ? 0.85f : 0.0f; }
+float fallen_leaf_cover(Season season) { return season == Season::Autumn ? 0.8f : 0.0f; }
 
 }  // namespace silva::render

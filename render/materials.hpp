@@ -33,8 +33,8 @@ inline constexpr float kGroundNeedleLitter[3] = {0.095f, 0.062f, 0.04f};   ///< 
 inline constexpr float kGroundGrass[3] = {0.075f, 0.092f, 0.032f};          ///< Short grass cover.
 inline constexpr float kGroundMoss[3] = {0.06f, 0.085f, 0.022f};          ///< Moss carpets.
 inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< Bare soil.
-inline constexpr float kGroundFallenOrange[3] = {0.24f, 0.095f, 0.03f};    ///< Freshly fallen leaves, orange-brown.
-inline constexpr float kGroundFallenYellow[3] = {0.30f, 0.19f, 0.035f};    ///< Freshly fallen leaves, yellow.
+inline constexpr float kGroundFallenOrange[3] = {0.15f, 0.065f, 0.028f};   ///< Freshly fallen leaves, russet brown.
+inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< Freshly fallen leaves, orange-yellow.
 /// The fBm layers (scale in 1/m, octaves; salts in render/noise_salts.hpp): stand 0.02 x2 (leaf
 /// vs needle litter), grass 0.06 x2, moss 0.15 x3, soil 0.5 x3, fine grain 4 x2; leaf detail value
 /// noise at 9 and 23.
@@ -62,7 +62,7 @@ void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float
                        Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr, float fallen_leaves = 0.0f);
 
 /// How much fresh leaf litter a season lays on the forest floor (ground_albedo_row's fallen_leaves):
-/// autumn 0.85, else 0 (winter's litter lies under the snow or has browned into the old litter).
+/// autumn 0.8, else 0 (winter's litter lies under the snow or has browned into the old litter).
 float fallen_leaf_cover(Season season);
 
 /// Relief height of the forest floor per unit of its leaf-sized noise (metres): leaves lying on each other.

@@ -67,7 +67,8 @@ def floor_row(silva, scratch, run):
     for f in (2, 5):
         cam = json.loads((run / f"autopilot/camera/{f:06d}.json").read_text())
         m = cam["camera_to_world"]
-        poses.append({"position": [m[0][3], m[1][3]], "yaw_deg": cam["yaw_deg"] + 60.0, "pitch_deg": -40.0})
+        poses.append({"position": [m[0][3], m[1][3]], "yaw_deg": cam["yaw_deg"] + 60.0, "pitch_deg": -40.0,
+                      "roll_deg": 0.0})
     pose_file = scratch / "floor-poses.json"
     pose_file.write_text(json.dumps({"poses": poses}))
     tiles = []
