@@ -79,7 +79,7 @@ io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& 
 void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
   const world::PlannedFrame& f = work.frame;
   if (settings.outputs.has(io::OutputType::Rgb)) {
-    shade_frame(ctx, settings, work);
+    shade_frame(ctx, work);
   } else {
     work.shade_s = 0;
     work.bare_soil_pixels = 0;
@@ -129,7 +129,7 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 
 }  // namespace
 
-void shade_frame(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+void shade_frame(const world::WorldContext& ctx, FrameWork& work) {
   const world::PlannedFrame& f = work.frame;
   const Stopwatch clock;
   const render::FrameLighting& lighting = work.lighting;
