@@ -133,7 +133,7 @@ TEST(GenerateRandomize, BadRangesAreOneLineAndExitTwo) {
   }
   const ProcessResult print = run_silva({"validate", "--print"}, dir);
   ASSERT_EQ(print.code, 0) << print.err;
-  for (const char* key : {"randomize.enabled = false", "randomize.sun_elevation_deg = [15, 70]", "exposure = \"preset\"",
+  for (const char* key : {"randomize.enabled = false", "randomize.sun_elevation_deg = [15.0, 70.0]", "exposure = \"preset\"",
                           "randomize.weathers = [\"clear\", \"overcast\", \"mist\", \"rain\"]"})
     EXPECT_NE(print.out.find(key), std::string::npos) << key;
 }
