@@ -55,7 +55,7 @@ TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightAndNightMistOnEve
       const fs::path day = render_random_views(dir, seed, "day", kViews, aerial);
       const fs::path dusk = render_random_views(dir, seed, "dusk", kViews, aerial);
       const fs::path night = render_random_views(dir, seed, "night", kViews, aerial);
-      const fs::path night_mist = render_random_views(dir, seed, "night", kViews, aerial, aerial ? "clear" : "mist");
+      const fs::path night_mist = aerial ? fs::path() : render_random_views(dir, seed, "night", kViews, aerial, "mist");
       for (int i = 0; i < kViews; ++i) {
         char file[16];
         std::snprintf(file, sizeof file, "%06d.png", i);
