@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "render/frame_lighting.hpp"
 #include "render/post.hpp"
 #include "render/shade.hpp"
 #include "render/shade_ao.hpp"
@@ -126,6 +127,37 @@ void BM_ShadeRgbCamera(benchmark::State& state) {
   state.counters["model"] = double(state.range(0));
 }
 BENCHMARK(BM_ShadeRgbCamera)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+/// shade_rgb on 2 threads with the default camera model and the exposure `state.range(0)`: 0 the preset's,
+/// 1 automatic (the frame is kept whole and metered), 2 the preset's with a randomised white balance.
+void BM_ShadeRgbExposure(benchmark::State& state) {
+  const Scene& s = scene();
+  LightingPreset preset = preset_day();
+  preset.sun_elevation_deg = 70;
+  const CameraModel model = camera_model(CameraConfig{}, s.camera);
+  const bool automatic = state.range(0) == 1;
+  const Vec3f white_balance = state.range(0) == 2 ? white_balance_gains(5600.0f) : Vec3f::Ones();
+  std::vector<uint8_t> rgb;
+  tbb::task_arena arena(2);
+  for (auto _ : state) {
+    arena.execute([&] {
+      shade_rgb({s.gbuffer, s.camera, preset, &s.shadow, 1, "random", 0, model, automatic, 0.0f, white_balance}, rgb);
+    });
+    benchmark::DoNotOptimize(rgb.data());
+  }
+  state.counters["exposure"] = double(state.range(0));
+}
+BENCHMARK(BM_ShadeRgbExposure)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+/// One frame's randomised lighting draw (render/frame_lighting.hpp), as every frame of a randomised run makes.
+void BM_FrameLightingDraw(benchmark::State& state) {
+  RunLighting run;
+  run.randomize.enabled = true;
+  for (const std::string& name : run.randomize.weathers) run.weather_choices.push_back(builtin_weathers().at(name));
+  uint64_t frame = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(frame_lighting(run, 1, "random", frame++));
+}
+BENCHMARK(BM_FrameLightingDraw);
 
 void BM_ScreenSpaceAo(benchmark::State& state) {
   const Scene& s = scene();

@@ -17,10 +17,26 @@ struct OutputConfig {
   std::vector<std::string> formats;        ///< output.formats: exports written after the run
 };
 
+/// Per-frame lighting randomisation (`[lighting.randomize]`): each range is [min, max], drawn uniformly per frame.
+struct LightingRandomizeConfig {
+  bool enabled = false;                                   ///< lighting.randomize.enabled
+  std::vector<double> sun_elevation_deg = {15, 70};       ///< lighting.randomize.sun_elevation_deg
+  std::vector<double> sun_azimuth_deg = {0, 360};         ///< lighting.randomize.sun_azimuth_deg
+  std::vector<double> cloud_cover = {0, 0.8};             ///< lighting.randomize.cloud_cover
+  std::vector<double> fog_density_scale = {0.5, 2};       ///< lighting.randomize.fog_density_scale
+  std::vector<double> exposure_compensation_ev = {-0.5, 0.5};  ///< lighting.randomize.exposure_compensation_ev
+  std::vector<double> white_balance_k = {5500, 7500};     ///< lighting.randomize.white_balance_k
+  std::vector<std::string> weathers = {"clear", "overcast", "mist", "rain"};  ///< lighting.randomize.weathers
+  std::vector<double> weather_weights = {4, 2, 1, 1};     ///< lighting.randomize.weather_weights
+};
+
 /// Lighting selection (`[lighting]`); the presets themselves live in render::LightingPreset.
 struct LightingConfig {
   std::string time_of_day = "day";  ///< lighting.time_of_day: preset name
   std::string weather = "clear";    ///< lighting.weather: weather preset name
+  std::string exposure = "preset";  ///< lighting.exposure: "preset" (the preset's ev100) or "auto" (metered)
+  double exposure_compensation = 0; ///< lighting.exposure_compensation: EV, positive = brighter
+  LightingRandomizeConfig randomize;  ///< [lighting.randomize]
 };
 
 /// Capture sequences (`[captures]`).

@@ -26,6 +26,7 @@ enum class Purpose : uint32_t {
   MaterialNoise = 41,
   WeatherOverlay = 42,
   LidarNoise = 43,
+  LightingRandomize = 44,
   VerifySample = 50,
   Test = 1000,
 };

@@ -8,6 +8,49 @@
 
 namespace silva::io {
 
+namespace {
+
+/// The "lighting" object of a camera file.
+nlohmann::ordered_json lighting_json(const LightingRecord& l) {
+  nlohmann::ordered_json j;
+  j["time_of_day"] = l.time_of_day;
+  j["weather"] = l.weather;
+  j["randomized"] = l.randomized;
+  j["sun_elevation_deg"] = l.sun_elevation_deg;
+  j["sun_azimuth_deg"] = l.sun_azimuth_deg;
+  j["cloud_cover"] = l.cloud_cover;
+  j["fog_density_scale"] = l.fog_density_scale;
+  j["white_balance_k"] = l.white_balance_k;
+  j["exposure"] = l.exposure;
+  j["exposure_compensation_ev"] = l.exposure_compensation_ev;
+  j["ev100"] = l.ev100 ? nlohmann::ordered_json(*l.ev100) : nlohmann::ordered_json(nullptr);
+  return j;
+}
+
+/// Parses lighting_json's object; `where` names it in InputError messages.
+LightingRecord parse_lighting(const nlohmann::json& j, const std::string& where) {
+  if (!j.is_object()) throw InputError(where + " must be an object");
+  LightingRecord l;
+  l.time_of_day = json_string(j, "time_of_day", where);
+  l.weather = json_string(j, "weather", where);
+  const nlohmann::json& randomized = json_member(j, "randomized", where);
+  if (!randomized.is_boolean()) throw InputError(where + ": 'randomized' must be true or false");
+  l.randomized = randomized.get<bool>();
+  l.sun_elevation_deg = json_number(j, "sun_elevation_deg", where);
+  l.sun_azimuth_deg = json_number(j, "sun_azimuth_deg", where);
+  l.cloud_cover = json_number(j, "cloud_cover", where);
+  l.fog_density_scale = json_number(j, "fog_density_scale", where);
+  l.white_balance_k = json_number(j, "white_balance_k", where);
+  l.exposure = json_string(j, "exposure", where);
+  if (l.exposure != "preset" && l.exposure != "auto")
+    throw InputError(where + ": 'exposure' must be \"preset\" or \"auto\", got \"" + l.exposure + "\"");
+  l.exposure_compensation_ev = json_number(j, "exposure_compensation_ev", where);
+  if (!json_member(j, "ev100", where).is_null()) l.ev100 = json_number(j, "ev100", where);
+  return l;
+}
+
+}  // namespace
+
 std::string camera_json(const CameraRecord& r) {
   const Camera& c = r.camera;
   nlohmann::ordered_json j;
@@ -25,6 +68,7 @@ std::string camera_json(const CameraRecord& r) {
   j["roll_deg"] = r.roll_deg;
   j["trail_s"] = r.trail_s ? nlohmann::ordered_json(*r.trail_s) : nlohmann::ordered_json(nullptr);
   j["camera_model"] = camera_model_json(r.model);
+  if (r.lighting) j["lighting"] = lighting_json(*r.lighting);
   return j.dump(2) + "\n";
 }
 
@@ -53,6 +97,7 @@ CameraRecord parse_camera_json(const std::string& text, const std::string& sourc
   r.roll_deg = json_number(j, "roll_deg", source);
   if (!json_member(j, "trail_s", source).is_null()) r.trail_s = json_number(j, "trail_s", source);
   r.model = parse_camera_model(j, source);
+  if (j.contains("lighting")) r.lighting = parse_lighting(json_member(j, "lighting", source), source + ": lighting");
   return r;
 }
 

@@ -14,12 +14,14 @@ float vignetting_factor(float x, float y, float strength) {
   return 1.0f - strength + strength * (cos2 * cos2);
 }
 
-RowEncoder::RowEncoder(const Camera& camera, const CameraModel& model, float exposure, uint64_t seed, uint64_t key)
+RowEncoder::RowEncoder(const Camera& camera, const CameraModel& model, float exposure, uint64_t seed, uint64_t key,
+                       const Vec3f& white_balance)
     : camera_(camera),
       seed_(seed),
       key_(key),
       exposure_(exposure),
       vignetting_(float(model.vignetting)),
+      white_balance_(white_balance),
       noise_(model.noise.has_value()) {
   row_.exposure = exposure;
   if (noise_) {
@@ -27,7 +29,7 @@ RowEncoder::RowEncoder(const Camera& camera, const CameraModel& model, float exp
     normals_.resize(size_t(camera.width) * 3);
     row_.normals = normals_.data();
   }
-  if (vignetting_ > 0.0f) {
+  if (vignetting_ > 0.0f || white_balance_ != Vec3f::Ones()) {
     scales_.resize(size_t(camera.width) * 3);
     row_.scales = scales_.data();
     ray_x_.resize(size_t(camera.width));
@@ -46,11 +48,11 @@ void RowEncoder::encode(int v, const float* radiance, uint8_t* out) {
       normals_[3 * u + 2] = z.z();
     }
   }
-  if (vignetting_ > 0.0f) {
+  if (row_.scales) {
     const float y = float((double(v) + 0.5 - camera_.cy) / camera_.fy);
     for (size_t u = 0; u < w; ++u) {
-      const float scale = exposure_ * vignetting_factor(ray_x_[u], y, vignetting_);
-      scales_[3 * u] = scales_[3 * u + 1] = scales_[3 * u + 2] = scale;
+      const float scale = vignetting_ > 0.0f ? exposure_ * vignetting_factor(ray_x_[u], y, vignetting_) : exposure_;
+      for (int k = 0; k < 3; ++k) scales_[3 * u + size_t(k)] = scale * white_balance_[k];
     }
   }
   encode_srgb8_row(radiance, w, row_, out);

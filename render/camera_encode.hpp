@@ -20,8 +20,10 @@ float vignetting_factor(float x, float y, float strength);
 /// Encodes rows of one frame; holds its own per-row buffers, so use one per thread.
 class RowEncoder {
  public:
-  /// For `camera`'s frame under `model`; noise drawn from the stream (seed, key).
-  RowEncoder(const Camera& camera, const CameraModel& model, float exposure, uint64_t seed, uint64_t key);
+  /// For `camera`'s frame under `model`; noise drawn from the stream (seed, key); each channel's
+  /// exposure times its `white_balance` gain.
+  RowEncoder(const Camera& camera, const CameraModel& model, float exposure, uint64_t seed, uint64_t key,
+             const Vec3f& white_balance = Vec3f::Ones());
   /// Encodes row v's camera.width linear radiances (3 floats each) into camera.width * 3 bytes.
   void encode(int v, const float* radiance, uint8_t* out);
 
@@ -29,6 +31,7 @@ class RowEncoder {
   const Camera& camera_;
   uint64_t seed_, key_;
   float exposure_, vignetting_;
+  Vec3f white_balance_;
   bool noise_;
   RowExposure row_;
   std::vector<float> ray_x_;  ///< Per column: the ray's x at z = 1 (vignetting only).

@@ -98,7 +98,7 @@ VF mix_channel(VF c, const float* to, int k, VF t) { return mix_lanes(c, hn::Set
 
 /// ground_albedo_row for one target.
 void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count, Vec3f* out,
-                   float* soil_out, Vec2f* slope_out) {
+                   float* soil_out, Vec2f* slope_out, float fallen_leaves) {
   const DF d;
   const size_t N = hn::Lanes(d);
   const float* p = positions->data();
@@ -136,12 +136,24 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
     const VF brightness =
         hn::Mul(hn::Add(one, hn::Mul(hn::Sub(scaled(grain, 0.6f), hn::Set(d, 0.3f)), grain_amount)),
                 hn::Add(one, hn::Mul(hn::Sub(scaled(speckle, 0.8f), hn::Set(d, 0.4f)), fine_detail)));
+    VF fallen = hn::Zero(d), fallen_hue = hn::Zero(d), fallen_orange[3], fallen_yellow[3];
+    if (fallen_leaves > 0.0f) {  // drifts of fresh leaves over everything but bare soil, thinner under conifers
+      const VF drift = smoothstep_lanes(0.25f, 0.55f, fbm2_lanes(scaled(px, 0.4f), scaled(py, 0.4f), 2, kGroundFallenSalt));
+      fallen = hn::Mul(scaled(drift, fallen_leaves), hn::Sub(one, scaled(needles, 0.7f)));
+      const VF hue_field = fbm2_lanes(scaled(px, 1.5f), scaled(py, 1.5f), 2, kGroundFallenSalt + 8);
+      fallen_hue = mix_lanes(hue_field, smoothstep_lanes(0.3f, 0.7f, leaf), fine_detail);
+      for (int k = 0; k < 3; ++k) {
+        fallen_orange[k] = hn::Set(d, kGroundFallenOrange[k]);
+        fallen_yellow[k] = hn::Set(d, kGroundFallenYellow[k] - kGroundFallenOrange[k]);
+      }
+    }
     VF c[3];
     for (int k = 0; k < 3; ++k) {
       VF v = mix_lanes(hn::Set(d, kGroundLeafLitter[k]), hn::Set(d, kGroundNeedleLitter[k]), needles);
       v = mix_channel(v, kGroundDryLeaves, k, dry);
       v = mix_channel(v, kGroundGrass, k, grass);
       v = mix_channel(v, kGroundMoss, k, moss);
+      if (fallen_leaves > 0.0f) v = mix_lanes(v, hn::Add(fallen_orange[k], hn::Mul(fallen_hue, fallen_yellow[k])), fallen);
       v = mix_channel(v, kGroundSoil, k, soil);
       c[k] = hn::Mul(v, brightness);
     }
@@ -177,8 +189,9 @@ HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
 
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil, Vec2f* slope) {
-  if (count > 0) HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, footprints, count, out, soil, slope);
+                       Vec3f* out, float* soil, Vec2f* slope, float fallen_leaves) {
+  if (count > 0)
+    HWY_DYNAMIC_DISPATCH(GroundRowImpl)(positions, normals, footprints, count, out, soil, slope, fallen_leaves);
 }
 
 int64_t ground_simd_target() { return HWY_DYNAMIC_DISPATCH(GroundTargetImpl)(); }

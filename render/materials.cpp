@@ -31,7 +31,7 @@ Vec3f variation_tint(uint32_t variation) {
 Vec3f ground(const SurfacePoint& s) {
   Vec3f c;
   const float footprint = 0.0f;
-  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c);
+  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c, nullptr, nullptr, s.fallen_leaves);
   return c;
 }
 
@@ -173,5 +173,7 @@ Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
   const float h = r.height * fade;
   return bumped_normal(s.normal, Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h));
 }
+
+float fallen_leaf_cover(Season season) { return season == Season::Autumn ? 0.8f : 0.0f; }
 
 }  // namespace silva::render

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/material.hpp"
+#include "core/season.hpp"
 #include "core/types.hpp"
 #include "render/noise_salts.hpp"
 
@@ -17,6 +18,7 @@ struct SurfacePoint {
   Vec2f uv;            ///< Mesh texture coordinates (trail: render/trail_material.hpp).
   Material material;   ///< Which procedural material.
   uint32_t variation;  ///< Per-instance variation seed.
+  float fallen_leaves = 0.0f;  ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
 };
 
 /// Linear-RGB diffuse albedo of a surface point: a pure function of the point (no state).
@@ -31,6 +33,8 @@ inline constexpr float kGroundNeedleLitter[3] = {0.095f, 0.062f, 0.04f};   ///< 
 inline constexpr float kGroundGrass[3] = {0.075f, 0.092f, 0.032f};          ///< Short grass cover.
 inline constexpr float kGroundMoss[3] = {0.06f, 0.085f, 0.022f};          ///< Moss carpets.
 inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< Bare soil.
+inline constexpr float kGroundFallenOrange[3] = {0.15f, 0.065f, 0.028f};   ///< Freshly fallen leaves, russet brown.
+inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< Freshly fallen leaves, orange-yellow.
 /// The fBm layers (scale in 1/m, octaves; salts in render/noise_salts.hpp): stand 0.02 x2 (leaf
 /// vs needle litter), grass 0.06 x2, moss 0.15 x3, soil 0.5 x3, fine grain 4 x2; leaf detail value
 /// noise at 9 and 23.
@@ -44,6 +48,9 @@ inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< B
 ///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) fine_detail)
 ///   c = mix(c, grass, 0.8 smoothstep(0.62, 0.78, fbm2(0.06 p, 2, grass)) flat)
 ///   c = mix(c, moss, 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
+///   with fallen_leaves f > 0 (autumn): fallen = f smoothstep(0.25, 0.55, fbm2(0.4 p, 2, fallen)) (1 - 0.7 needles),
+///   hue = mix(fbm2(1.5 p, 2, fallen + 8), smoothstep(0.3, 0.7, leaf), fine_detail),
+///   c = mix(c, mix(fallen_orange, fallen_yellow, hue), fallen): fresh leaves over grass and moss
 ///   soil = max(1 - flat, smoothstep(0.7, 0.84, fbm2(0.5 p, 3, soil))); c = mix(c, soil_colour, soil)
 ///   out = c (1 + (0.6 fbm2(4 p, 2, fine) - 0.3) (1 - smoothstep(0.1, 0.4, footprint)))
 ///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
@@ -52,7 +59,11 @@ inline constexpr float kGroundSoil[3] = {0.075f, 0.055f, 0.038f};         ///< B
 ///   height = (kGroundLeafRelief leaf + kGroundSpeckleRelief speckle) fine_detail
 /// (analytic derivatives of the same two value noises; fine_detail taken as constant).
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr);
+                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr, float fallen_leaves = 0.0f);
+
+/// How much fresh leaf litter a season lays on the forest floor (ground_albedo_row's fallen_leaves):
+/// autumn 0.8, else 0 (winter's litter lies under the snow or has browned into the old litter).
+float fallen_leaf_cover(Season season);
 
 /// Relief height of the forest floor per unit of its leaf-sized noise (metres): leaves lying on each other.
 inline constexpr float kGroundLeafRelief = 0.012f;

@@ -15,6 +15,7 @@ enum NoiseSalt : uint32_t {
   kGroundSoilSalt = 0x160,   ///< Bare-soil patches.
   kGroundFineSalt = 0x180,   ///< Brightness grain.
   kGroundLeafSalt = 0x1a0,   ///< Leaf-sized blotches (and + 1: speckle).
+  kGroundFallenSalt = 0x1c0, ///< Drifts of freshly fallen autumn leaves (and + 8: their hue).
   // Trail (render/trail_material.cpp, render/surface_overlay.cpp).
   kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
   kTrailStone = 0x420,       ///< Embedded stones.

@@ -12,6 +12,7 @@
 
 #include "core/base_color.hpp"
 #include "core/error.hpp"
+#include "render/auto_exposure.hpp"
 #include "render/brdf.hpp"
 #include "render/camera_encode.hpp"
 #include "render/camera_optics.hpp"
@@ -129,7 +130,7 @@ struct RowTerms {
     gather_soil.resize(ground_at.size());
     gather_slope.resize(ground_at.size());
     ground_albedo_row(gather_p.data(), gather_n.data(), gather_footprint.data(), ground_at.size(), gather_out.data(),
-                      gather_soil.data(), gather_slope.data());
+                      gather_soil.data(), gather_slope.data(), in.fallen_leaves);
     for (size_t k = 0; k < ground_at.size(); ++k) {
       ground[ground_at[k]] = gather_out[k];
       ground_slope[ground_at[k]] = gather_slope[k];
@@ -176,7 +177,7 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const MirroredSky&
                        const WeatherLook& look, const RowTerms& row, int u, int v, const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
-  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i]};
+  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f albedo = g.base_color[i] != 0 ? unpack_srgb8(g.base_color[i])
                  : procedural_ground  ? row.ground[size_t(u)]
@@ -228,18 +229,19 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
   const WeatherLook look(lit.weather);
   const MirroredSky mirror(sky);
-  const float exposure = exposure_multiplier(lit.ev100);
+  float ev100 = lit.ev100 - in.exposure_compensation_ev;
+  float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
-  const bool whole_frame = needs_whole_frame(in.model);
+  const bool whole_frame = needs_whole_frame(in.model) || in.auto_exposure;
   LinearFrame frame, scratch;
   if (whole_frame) frame.resize(g.width, g.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     RowTerms terms(g.width);
     std::optional<RowEncoder> encoder;  // encodes each row as it is shaded, unless the optics need the frame
-    if (!whole_frame) encoder.emplace(in.camera, in.model, exposure, in.seed, key);
+    if (!whole_frame) encoder.emplace(in.camera, in.model, exposure, in.seed, key, in.white_balance);
     std::vector<Vec3f> row_radiance(whole_frame ? 0 : size_t(g.width));
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
@@ -257,16 +259,20 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     bare_soil += terms.bare_soil;
   });
   if (whole_frame) {
-    apply_optics(frame, scratch, g.depth, in.camera, in.model);
+    if (in.auto_exposure) {
+      ev100 = ev100_for_luminance(log_average_luminance(frame)) - in.exposure_compensation_ev;
+      exposure = exposure_multiplier(ev100);
+    }
+    if (needs_whole_frame(in.model)) apply_optics(frame, scratch, g.depth, in.camera, in.model);
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-      RowEncoder encoder(in.camera, in.model, exposure, in.seed, key);
+      RowEncoder encoder(in.camera, in.model, exposure, in.seed, key, in.white_balance);
       for (int v = rows.begin(); v < rows.end(); ++v) {
         const size_t row = size_t(v) * size_t(g.width);
         encoder.encode(v, frame.rgb[row].data(), &rgb_out[row * 3]);
       }
     });
   }
-  return {bare_soil.load()};
+  return {bare_soil.load(), ev100};
 }
 
 }  // namespace silva::render

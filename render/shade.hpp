@@ -21,11 +21,16 @@ struct ShadeInputs {
   std::string_view sequence;      ///< Sequence name (sensor noise key).
   uint64_t frame;                 ///< Frame number within the sequence (sensor noise key).
   CameraModel model;              ///< Sensor noise and optics applied to the RGB.
+  bool auto_exposure = false;     ///< Expose by the frame's metered luminance (render/auto_exposure.hpp), not preset.ev100.
+  float exposure_compensation_ev = 0.0f;  ///< EV added to the image's brightness (the EV100 used is lowered by it).
+  Vec3f white_balance = Vec3f::Ones();    ///< Per-channel gains of the camera's white balance (render/frame_lighting.hpp).
+  float fallen_leaves = 0.0f;             ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
 };
 
 /// What shading saw, for the run's statistics.
 struct ShadeCounts {
   uint64_t bare_soil_pixels = 0;  ///< Forest-floor pixels whose bare-soil weight is at least 0.5.
+  float ev100 = 0.0f;             ///< The EV100 the frame was exposed with (after metering and compensation).
 };
 
 /// Shades every pixel with the preset's weather applied (with_weather): procedural material albedo
@@ -34,7 +39,8 @@ struct ShadeCounts {
 /// across pixels of similar depth), through exponential height fog; sky pixels get the Preetham /
 /// overcast sky; falling rain or snow over the radiance. Then the camera model: motion blur, depth
 /// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
-/// exposure with vignetting, shot + read sensor noise, ACES tone mapping, sRGB.
+/// exposure (the preset's, or metered from the whole linear frame with auto_exposure; minus the
+/// compensation) with the white balance and vignetting, shot + read sensor noise, ACES tone mapping, sRGB.
 /// Writes width*height*3 bytes, R, G, B, row-major. Rows run in parallel on the caller's TBB
 /// arena; every pixel is a pure function of the inputs, so the bytes never depend on threads.
 /// Returns the counts of what it shaded.

@@ -12,6 +12,22 @@ namespace silva::render {
 /// surfaces it hangs between (night mist stays as dark as the night).
 inline constexpr float kFogCanopyOpenness = 0.45f;
 
+/// Mean path length of diffuse light through a fog column, in units of its vertical optical depth.
+inline constexpr double kDiffuseFogPath = 1.5;
+/// The sun's path through the fog column is depth / max(sin elevation, this).
+inline constexpr double kMinFogSunSine = 0.1;
+
+/// Fractions of the sky's and the sun's light that reach the fog at the camera through the fog above it.
+struct HeightFogLight {
+  float diffuse = 1.0f;  ///< Sky and ground light: exp(-kDiffuseFogPath x column depth).
+  float sun = 1.0f;      ///< Direct light: exp(-column depth / max(sin elevation, kMinFogSunSine)).
+};
+
+/// Dense fog shades itself: the light it scatters towards the camera has first crossed the fog column
+/// above the camera (optical depth fog_density e^(-falloff (z - fog_height)) / falloff), so a thick mist
+/// under a dim sky or the moon stays dark instead of glowing like a thin haze.
+HeightFogLight fog_light_transmittance(const LightingPreset& preset, const Vec3f& to_sun, float camera_z);
+
 /// Height fog of one preset and camera position: density(z) = fog_density * exp(-falloff (z - fog_height)).
 struct HeightFog {
   /// Precomputes the camera-height factor of the fog integral.
@@ -23,7 +39,7 @@ struct HeightFog {
   void amounts(const Vec3f* points, size_t count, float* out) const { fog_amounts(params_, points, count, out); }
   /// Fog radiance along unit view direction `dir`: the light arriving from all directions (sky,
   /// ground bounce, sun) scattered evenly, times kFogCanopyOpenness, plus a forward lobe towards
-  /// the sun; times fog_tint.
+  /// the sun; each light dimmed by the fog above (fog_light_transmittance); times fog_tint.
   Vec3f color(const Vec3f& dir) const;
   /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
   Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;
@@ -31,6 +47,7 @@ struct HeightFog {
  private:
   const Sky& sky_;
   FogAmountParams params_;  ///< Camera, falloff and density at the camera height.
+  HeightFogLight light_;    ///< What reaches the fog through the fog above.
   Vec3f in_scatter_;   ///< Isotropic in-scattered radiance, kcd/m².
   Vec3f sun_scatter_;  ///< Peak of the forward lobe towards the sun, kcd/m².
 };

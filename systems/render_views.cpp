@@ -32,6 +32,8 @@ std::shared_ptr<FrameWork> FrameSlots::take() {
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   render::Renderer& renderer, FrameWork& work) {
   const Camera& camera = work.frame.camera;
+  work.lighting = render::frame_lighting(settings.lighting, uint64_t(ctx.config.seed), work.frame.sequence,
+                                         uint64_t(work.frame.frame));
   render::RenderOptions options;
   options.lod = ctx.config.render.lod;
   Stopwatch clock;
@@ -43,7 +45,7 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
   work.shadow_s = 0;
   if (!settings.outputs.has(io::OutputType::Rgb)) return;
   clock.restart();
-  const Vec3d sun = render::sun_direction(settings.preset).cast<double>();
+  const Vec3d sun = render::sun_direction(work.lighting.preset).cast<double>();
   const Vec3d p = camera.position();
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
   const render::ShadowPlan plan = render::plan_shadow(camera, ground_z, ctx.config.terrain.max_elevation, sun);

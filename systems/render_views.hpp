@@ -16,7 +16,7 @@
 #include "io/output_types.hpp"
 #include "raycast/lidar.hpp"
 #include "render/gbuffer.hpp"
-#include "render/lighting.hpp"
+#include "render/frame_lighting.hpp"
 #include "render/renderer.hpp"
 #include "world/plan_captures.hpp"
 
@@ -24,7 +24,7 @@ namespace silva::systems {
 
 /// Resource: what a capture run renders and where it writes.
 struct CaptureSettings {
-  render::LightingPreset preset;     ///< Selected lighting preset.
+  render::RunLighting lighting;      ///< Selected lighting preset, exposure and per-frame randomisation.
   Ontology ontology;                 ///< Class ids and colours.
   io::OutputSelection outputs;       ///< Output types to write.
   std::filesystem::path run_dir;     ///< <output.dir>/<seed>/.
@@ -34,6 +34,8 @@ struct CaptureSettings {
 /// One frame travelling from Render through Write; its buffers are reused across frames.
 struct FrameWork {
   world::PlannedFrame frame;         ///< The planned capture.
+  render::FrameLighting lighting;    ///< The frame's lighting (drawn per frame when randomised).
+  float ev100 = 0;                   ///< The EV100 the RGB was exposed with (0 without rgb).
   render::GBuffer gbuffer;           ///< Labels, depth, normals.
   std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
   std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.

@@ -1,6 +1,7 @@
 #include "systems/write_dataset.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -8,12 +9,14 @@
 #include "components/phase.hpp"
 #include "components/world_source.hpp"
 #include "core/error.hpp"
+#include "core/season.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
 #include "io/label_planes.hpp"
 #include "io/lidar_files.hpp"
 #include "render/edge_aa.hpp"
+#include "render/materials.hpp"
 #include "render/shade.hpp"
 #include "systems/render_views.hpp"
 #include "world/world_context.hpp"
@@ -24,11 +27,37 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The season vegetation.season names (the schema allows only the three names).
+Season config_season(const Config& config) {
+  Season season = Season::Summer;
+  parse_season(config.vegetation.season, season);
+  return season;
+}
+
 /// The camera model of a planned frame: `[camera]`'s, with the frame's motion while the shutter is open.
 CameraModel frame_camera_model(const Config& config, const world::PlannedFrame& f) {
   CameraModel model = camera_model(config.camera, f.camera);
   model.motion = f.exposure_motion;
   return model;
+}
+
+/// The lighting record of a frame: its drawn values and exposure, when randomised or auto-exposed.
+std::optional<io::LightingRecord> lighting_record(const FrameWork& work, bool rgb) {
+  const render::FrameLighting& l = work.lighting;
+  if (!l.randomized && !l.auto_exposure) return std::nullopt;
+  io::LightingRecord r;
+  r.time_of_day = l.time_of_day;
+  r.weather = l.weather;
+  r.randomized = l.randomized;
+  r.sun_elevation_deg = l.preset.sun_elevation_deg;
+  r.sun_azimuth_deg = l.preset.sun_azimuth_deg;
+  r.cloud_cover = l.preset.cloud_cover;
+  r.fog_density_scale = l.fog_density_scale;
+  r.white_balance_k = l.white_balance_k;
+  r.exposure = l.auto_exposure ? "auto" : "preset";
+  r.exposure_compensation_ev = l.exposure_compensation_ev;
+  if (rgb) r.ev100 = work.ev100;
+  return r;
 }
 
 /// The camera record of a planned frame.
@@ -50,7 +79,7 @@ io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& 
 void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
   const world::PlannedFrame& f = work.frame;
   if (settings.outputs.has(io::OutputType::Rgb)) {
-    shade_frame(ctx, settings, work);
+    shade_frame(ctx, work);
   } else {
     work.shade_s = 0;
     work.bare_soil_pixels = 0;
@@ -83,7 +112,9 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
     io::write_file_atomic(seq / file.relative_path, file.bytes);
     stats.bytes_written += file.bytes.size();
   }
-  const std::string camera = io::camera_json(camera_record(config, work.frame));
+  io::CameraRecord record = camera_record(config, work.frame);
+  record.lighting = lighting_record(work, settings.outputs.has(io::OutputType::Rgb));
+  const std::string camera = io::camera_json(record);
   io::write_file_atomic(settings.run_dir / camera_file(work.frame), camera);
   stats.bytes_written += camera.size();
   stats.write_s += clock.seconds();
@@ -105,12 +136,19 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 
 }  // namespace
 
-void shade_frame(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+void shade_frame(const world::WorldContext& ctx, FrameWork& work) {
   const world::PlannedFrame& f = work.frame;
   const Stopwatch clock;
-  const render::ShadeInputs in{work.gbuffer, f.camera, settings.preset, &work.shadow, uint64_t(ctx.config.seed),
-                               f.sequence, uint64_t(f.frame), frame_camera_model(ctx.config, f)};
-  work.bare_soil_pixels = render::shade_rgb(in, work.rgb).bare_soil_pixels;
+  const render::FrameLighting& lighting = work.lighting;
+  const render::ShadeInputs in{work.gbuffer,     f.camera,
+                               lighting.preset,  &work.shadow,
+                               uint64_t(ctx.config.seed), f.sequence,
+                               uint64_t(f.frame), frame_camera_model(ctx.config, f),
+                               lighting.auto_exposure, lighting.exposure_compensation_ev,
+                               lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config))};
+  const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
+  work.bare_soil_pixels = counts.bare_soil_pixels;
+  work.ev100 = counts.ev100;
   if (ctx.config.camera.antialias) {
     render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
     work.rgb.swap(work.rgb_scratch);

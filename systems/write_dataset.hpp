@@ -54,9 +54,10 @@ struct DatasetWriter {
   int total = 0;                             ///< Frames the run captures (for progress).
 };
 
-/// Shades `work`'s RGB from its G-buffer and shadow map as a capture does (the frame's camera model,
-/// edge antialiasing when camera.antialias), into work.rgb; sets shade_s and bare_soil_pixels.
-void shade_frame(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work);
+/// Shades `work`'s RGB from its G-buffer and shadow map under its lighting (work.lighting) as a capture
+/// does (the frame's camera model, edge antialiasing when camera.antialias), into work.rgb; sets shade_s,
+/// bare_soil_pixels and ev100.
+void shade_frame(const world::WorldContext& ctx, FrameWork& work);
 
 /// The planes the label encoders read, viewing `g`.
 io::LabelPlanes label_planes(const render::GBuffer& g);

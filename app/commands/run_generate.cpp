@@ -150,7 +150,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
 
   Progress progress(reporter, int(frames.size()), "frames");
   const systems::CaptureStats stats =
-      schedule.capture(frames, {setup.preset, setup.ontology, outputs, run_dir, setup.lidar},
+      schedule.capture(frames, {setup.lighting, setup.ontology, outputs, run_dir, setup.lidar},
                        [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
   progress.finish();
 

@@ -79,7 +79,7 @@ std::vector<uint8_t> view_image(const world::WorldContext& ctx, const systems::C
   const io::LabelPlanes planes = systems::label_planes(work.gbuffer);
   switch (mode) {
     case ViewMode::Rgb:
-      systems::shade_frame(ctx, settings, work);
+      systems::shade_frame(ctx, work);
       return work.rgb;
     case ViewMode::Semantic:
       return io::semantic_color_image(planes, settings.ontology);
@@ -133,7 +133,7 @@ ViewFrame ViewWorld::render(const ViewPose& pose, ViewMode mode, int width, int 
     refused = !blocked(there.camera.position());
     if (refused) frame = there;
   }
-  const systems::CaptureSettings settings{setup_.preset, setup_.ontology, mode_outputs(mode), {}, {}};
+  const systems::CaptureSettings settings{setup_.lighting, setup_.ontology, mode_outputs(mode), {}, {}};
   std::shared_ptr<systems::FrameWork> work = schedule_->render_view(frame, settings);
   ViewFrame out;
   out.schedule_ms = clock.seconds() * 1e3;
@@ -198,7 +198,7 @@ nlohmann::json ViewWorld::capture(const ViewPose& pose) {
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup_.ontology));
   const io::OutputSelection outputs = io::OutputSelection::from_names(cfg.output.types);
   const systems::CaptureStats stats =
-      schedule_->capture({frame}, {setup_.preset, setup_.ontology, outputs, run_dir, {}}, {}, {});
+      schedule_->capture({frame}, {setup_.lighting, setup_.ontology, outputs, run_dir, {}}, {}, {});
   if (stats.frames_written != 1) throw IoError("the capture of frame " + std::to_string(frame.frame) + " failed");
   io::write_file_atomic(pose_path, text);
   return {{"frame", frame.frame},

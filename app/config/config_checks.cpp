@@ -26,6 +26,36 @@ void check_multiple(const std::string& where, double chunk_size, std::string_vie
   }
 }
 
+/// [lighting.randomize]: every range is [min, max] with min <= max; each weather is a weather preset with one
+/// weight, and the weights do not all vanish.
+void check_lighting_randomize(const std::string& where, const LightingRandomizeConfig& r,
+                              const std::vector<std::string>& weathers) {
+  const std::pair<const char*, const std::vector<double>*> ranges[] = {
+      {"sun_elevation_deg", &r.sun_elevation_deg}, {"sun_azimuth_deg", &r.sun_azimuth_deg},
+      {"cloud_cover", &r.cloud_cover}, {"fog_density_scale", &r.fog_density_scale},
+      {"exposure_compensation_ev", &r.exposure_compensation_ev}, {"white_balance_k", &r.white_balance_k}};
+  for (const auto& [key, range] : ranges) {
+    const std::string name = std::string("lighting.randomize.") + key;
+    if (range->size() != 2)
+      throw InputError(where + ": " + name + " must list 2 numbers [min, max], got " + std::to_string(range->size()));
+    if ((*range)[0] > (*range)[1])
+      throw InputError(where + ": " + name + " = [" + format_number((*range)[0]) + ", " + format_number((*range)[1]) +
+                       "] must have min <= max");
+  }
+  for (const std::string& name : r.weathers)
+    if (!contains(weathers, name))
+      throw InputError(where + ": lighting.randomize.weathers names \"" + name +
+                       "\", which is not a weather preset (define [lighting.weather_presets." + name + "])");
+  if (r.weather_weights.size() != r.weathers.size())
+    throw InputError(where + ": lighting.randomize.weather_weights must list one weight per name of "
+                             "lighting.randomize.weathers (" + std::to_string(r.weathers.size()) + "), got " +
+                     std::to_string(r.weather_weights.size()));
+  double total = 0;
+  for (const double w : r.weather_weights) total += w;
+  if (!r.weathers.empty() && !(total > 0))
+    throw InputError(where + ": lighting.randomize.weather_weights must hold at least one weight above 0");
+}
+
 }  // namespace
 
 bool is_whole_multiple(double whole, double part) {
@@ -113,6 +143,7 @@ void check_config(const LoadedConfig& loaded) {
     throw InputError(where + ": lighting.weather = \"" + c.lighting.weather + "\" is not a weather preset (allowed: " +
                      allowed + ", or define [lighting.weather_presets." + c.lighting.weather + "])");
   }
+  check_lighting_randomize(where, c.lighting.randomize, weathers);
 }
 
 }  // namespace silva::app

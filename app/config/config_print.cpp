@@ -130,8 +130,13 @@ nlohmann::json config_to_json(const LoadedConfig& loaded) {
   Config config = loaded.config;
   nlohmann::json out = nlohmann::json::object();
   for (const ConfigKey& key : config_schema()) {
-    if (key.section().empty()) out[std::string(key.leaf())] = json_value(key, config);
-    else out[std::string(key.section())][std::string(key.leaf())] = json_value(key, config);
+    nlohmann::json* node = &out;  // a dotted name nests: lighting.randomize.enabled -> lighting: {randomize: {enabled}}
+    std::string_view name = key.name;
+    for (size_t dot = name.find('.'); dot != std::string_view::npos; dot = name.find('.')) {
+      node = &(*node)[std::string(name.substr(0, dot))];
+      name.remove_prefix(dot + 1);
+    }
+    (*node)[std::string(name)] = json_value(key, config);
   }
   if (!loaded.lighting_presets.empty()) {
     std::ostringstream presets;

@@ -35,8 +35,19 @@ auto load_presets(const toml::table& file, const fs::path& lighting_toml, const 
   return presets;
 }
 
-/// The preset lighting.time_of_day names with the weather lighting.weather names.
-render::LightingPreset selected_preset(const LoadedConfig& loaded, const fs::path& lighting_toml) {
+/// The weather preset `name` of `weathers`; InputError naming `key` when there is none.
+template <class Map>
+render::WeatherPreset find_weather(const Map& weathers, const std::string& name, const char* key) {
+  const auto weather = weathers.find(name);
+  if (weather == weathers.end())
+    throw InputError(std::string(key) + ": no weather preset named \"" + name + "\"; define [lighting.weather_presets." +
+                     name + "] or use clear, overcast, mist, rain, snow");
+  return weather->second;
+}
+
+/// The preset lighting.time_of_day names with the weather lighting.weather names, the exposure,
+/// and the weathers lighting.randomize draws from.
+render::RunLighting selected_lighting(const LoadedConfig& loaded, const fs::path& lighting_toml) {
   const toml::table file = read_lighting_file(lighting_toml.string());
   const auto presets =
       load_presets(file, lighting_toml, loaded, loaded.lighting_presets, "presets", parse_lighting_presets);
@@ -47,14 +58,18 @@ render::LightingPreset selected_preset(const LoadedConfig& loaded, const fs::pat
   if (it == presets.end())
     throw InputError("lighting.time_of_day: no preset named \"" + choice.time_of_day + "\"; define [lighting.presets." +
                      choice.time_of_day + "] or use day, dusk, night");
-  const auto weather = weathers.find(choice.weather);
-  if (weather == weathers.end())
-    throw InputError("lighting.weather: no weather preset named \"" + choice.weather +
-                     "\"; define [lighting.weather_presets." + choice.weather +
-                     "] or use clear, overcast, mist, rain, snow");
-  render::LightingPreset preset = it->second;
-  preset.weather = weather->second;
-  return preset;
+  render::RunLighting lighting;
+  lighting.preset = it->second;
+  lighting.preset.weather = find_weather(weathers, choice.weather, "lighting.weather");
+  lighting.time_of_day = choice.time_of_day;
+  lighting.weather = choice.weather;
+  lighting.auto_exposure = choice.exposure == "auto";
+  lighting.exposure_compensation_ev = float(choice.exposure_compensation);
+  lighting.randomize = choice.randomize;
+  if (lighting.randomize.enabled)
+    for (const std::string& name : choice.randomize.weathers)
+      lighting.weather_choices.push_back(find_weather(weathers, name, "lighting.randomize.weathers"));
+  return lighting;
 }
 }  // namespace
 
@@ -74,7 +89,7 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   setup.lighting_toml = data_path("configs/lighting.toml");
   setup.library_json = asset_library_path();
   setup.ontology = io::load_ontology(setup.ontology_json);
-  setup.preset = selected_preset(loaded, setup.lighting_toml);
+  setup.lighting = selected_lighting(loaded, setup.lighting_toml);
   setup.lidar_toml = data_path("configs/lidar.toml");
   setup.lidar = selected_lidar_preset(loaded, setup.lidar_toml);
   Season season = Season::Summer;

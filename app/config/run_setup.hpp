@@ -9,7 +9,7 @@
 #include "assets/library.hpp"
 #include "core/ontology.hpp"
 #include "raycast/lidar.hpp"
-#include "render/lighting.hpp"
+#include "render/frame_lighting.hpp"
 #include "world/world_context.hpp"
 
 namespace silva::app {
@@ -19,7 +19,7 @@ struct RunSetup {
   std::unique_ptr<assets::AssetLibrary> library;  ///< Placeable assets.
   world::WorldContext world;                      ///< Config, terrain, trail, asset tables.
   Ontology ontology;                              ///< Class ids, names, colours.
-  render::LightingPreset preset;                  ///< The preset lighting.time_of_day names, with lighting.weather's weather.
+  render::RunLighting lighting;                   ///< The preset lighting.time_of_day names with lighting.weather's weather, exposure, randomisation.
   std::filesystem::path library_json;             ///< The asset library manifest used.
   std::filesystem::path lighting_toml;            ///< The lighting presets file used.
   std::filesystem::path ontology_json;            ///< The ontology file used.

@@ -28,7 +28,7 @@ CaptureRun capture(const BenchContext& ctx, WarmWorld& w, std::vector<world::Pla
                    const std::vector<std::string>& types, int threads) {
   stop_if_interrupted();
   static int run_number = 0;
-  const systems::CaptureSettings settings{ctx.setup.preset, ctx.setup.ontology, io::OutputSelection::from_names(types),
+  const systems::CaptureSettings settings{ctx.setup.lighting, ctx.setup.ontology, io::OutputSelection::from_names(types),
                                           ctx.scratch / ("run-" + std::to_string(++run_number)), {}};
   CaptureRun run;
   run.width = frames.empty() ? 0 : frames.front().camera.width;  // frames may be planned at another size

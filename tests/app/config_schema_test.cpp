@@ -24,10 +24,14 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
         "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance", "lidar.preset",
-        "lidar.mount_offset", "lidar.mount_rpy_deg", "lidar.motion_distortion"}) {
+        "lidar.mount_offset", "lidar.mount_rpy_deg", "lidar.motion_distortion", "lighting.exposure", "lighting.exposure_compensation",
+        "lighting.randomize.enabled", "lighting.randomize.sun_elevation_deg", "lighting.randomize.sun_azimuth_deg",
+        "lighting.randomize.cloud_cover", "lighting.randomize.fog_density_scale",
+        "lighting.randomize.exposure_compensation_ev", "lighting.randomize.white_balance_k",
+        "lighting.randomize.weathers", "lighting.randomize.weather_weights"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 58u);
+  EXPECT_EQ(names.size(), 69u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

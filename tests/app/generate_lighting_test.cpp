@@ -29,14 +29,16 @@ double mean_luma(const fs::path& png) {
   return sum / double(bgr.rows * bgr.cols);
 }
 
-/// Renders `views` random views of `seed` at 160x90 (RGB only) under time of day `time`.
-fs::path render_random_views(const fs::path& dir, int64_t seed, const std::string& time, int views, bool aerial) {
-  const fs::path out = dir / (time + (aerial ? "-aerial" : "-ground"));
+/// Renders `views` random views of `seed` at 160x90 (RGB only) under time of day `time` and `weather`.
+fs::path render_random_views(const fs::path& dir, int64_t seed, const std::string& time, int views, bool aerial,
+                             const std::string& weather = "clear") {
+  const fs::path out = dir / (time + "-" + weather + (aerial ? "-aerial" : "-ground"));
   const ProcessResult r = run_silva(
       {"generate", "--seed", std::to_string(seed), "--out", out.string(), "--set", "output.resolution=160x90",
        "--set", R"(captures.sequences=["random"])", "--set", "captures.random_count=" + std::to_string(views), "--set",
        "world.extent=256", "--set", "world.render_distance=160", "--set", std::string("captures.aerial=") +
-       (aerial ? "true" : "false"), "--set", "lighting.time_of_day=" + time, "--set", R"(output.types=["rgb"])"},
+       (aerial ? "true" : "false"), "--set", "lighting.time_of_day=" + time, "--set", "lighting.weather=" + weather, "--set",
+       R"(output.types=["rgb"])"},
       dir);
   EXPECT_EQ(r.code, 0) << r.err;
   char name[16];
@@ -44,7 +46,7 @@ fs::path render_random_views(const fs::path& dir, int64_t seed, const std::strin
   return out / name / "random" / "rgb";
 }
 
-TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightOnEveryView) {
+TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightAndNightMistOnEveryView) {
   const fs::path dir = fresh_test_dir();
   constexpr int kViews = 20;
   for (const int64_t seed : {int64_t{1414213562}, int64_t{42}, int64_t{271828}}) {
@@ -53,6 +55,7 @@ TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightOnEveryView) {
       const fs::path day = render_random_views(dir, seed, "day", kViews, aerial);
       const fs::path dusk = render_random_views(dir, seed, "dusk", kViews, aerial);
       const fs::path night = render_random_views(dir, seed, "night", kViews, aerial);
+      const fs::path night_mist = aerial ? fs::path() : render_random_views(dir, seed, "night", kViews, aerial, "mist");
       for (int i = 0; i < kViews; ++i) {
         char file[16];
         std::snprintf(file, sizeof file, "%06d.png", i);
@@ -61,9 +64,55 @@ TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightOnEveryView) {
         EXPECT_GT(d, k);
         EXPECT_GT(k, n);
         EXPECT_GT(n, 1.0);  // night is dark, not black
+        // Inside the mist (ground views) the fog shades the moonlight it scatters: no brighter than a clear night.
+        // From 15 m up the camera looks down onto the mist's moonlit top, which is brighter, as a fog sea is.
+        if (!aerial) EXPECT_LE(mean_luma(night_mist / file), n);
       }
     }
   }
+}
+
+/// Share of a view's ground-labelled pixels (semantic id 1) that look like fallen leaves: red above 1.3 x green.
+double leaf_litter_share(const fs::path& rgb_png, const fs::path& semantic_png) {
+  const cv::Mat bgr = cv::imread(rgb_png.string(), cv::IMREAD_COLOR);
+  const cv::Mat sem = cv::imread(semantic_png.string(), cv::IMREAD_UNCHANGED);
+  EXPECT_FALSE(bgr.empty() || sem.empty()) << rgb_png;
+  int ground = 0, litter = 0;
+  for (int y = 0; y < bgr.rows; ++y)
+    for (int x = 0; x < bgr.cols; ++x) {
+      if (sem.at<uint8_t>(y, x) != 1) continue;
+      const cv::Vec3b p = bgr.at<cv::Vec3b>(y, x);
+      ++ground;
+      litter += p[2] > 1.3 * p[1] ? 1 : 0;
+    }
+  return ground ? double(litter) / ground : 0.0;
+}
+
+TEST(GenerateLighting, AutumnLaysMoreLeafLitterOnTheFloorWithTheSameLabels) {
+  const fs::path dir = fresh_test_dir();
+  const auto render = [&](const std::string& season) {
+    std::vector<std::string> args = tiny_run_args(dir / season, 1414213562, R"(["rgb","semantic"])");
+    args.insert(args.end(), {"--set", R"(captures.sequences=["random"])", "--set", "captures.random_count=4", "--set",
+                             "output.resolution=160x90", "--set", "camera.noise=false", "--set",
+                             "vegetation.season=" + season});
+    const ProcessResult r = run_silva(args, dir);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return dir / season / "1414213562" / "random";
+  };
+  const fs::path summer = render("summer"), autumn = render("autumn");
+  EXPECT_EQ(file_differences(folder_files(summer / "semantic"), folder_files(autumn / "semantic")), "");
+  double summer_total = 0, autumn_total = 0;
+  for (int i = 0; i < 4; ++i) {
+    char file[16];
+    std::snprintf(file, sizeof file, "%06d.png", i);
+    const double s = leaf_litter_share(summer / "rgb" / file, summer / "semantic" / file);
+    const double a = leaf_litter_share(autumn / "rgb" / file, autumn / "semantic" / file);
+    SCOPED_TRACE(testing::Message() << "view " << i << ": summer " << s << ", autumn " << a);
+    EXPECT_GE(a, s);
+    summer_total += s / 4;
+    autumn_total += a / 4;
+  }
+  EXPECT_GT(autumn_total, summer_total + 0.05);
 }
 
 TEST(GenerateLighting, WeatherLeavesLabelsAndDepthByteIdentical) {

@@ -130,3 +130,43 @@ TEST(CameraJson, MalformedFileIsInputErrorNamingFileAndKey) {
 
 }  // namespace
 }  // namespace silva::io
+
+namespace silva::io {
+namespace {
+
+TEST(CameraJson, LightingRecordRoundTripsAndIsAbsentWhenUnset) {
+  CameraRecord r = sample(false);
+  EXPECT_EQ(camera_json(r).find("\"lighting\""), std::string::npos);  // files without it keep their bytes
+  LightingRecord l;
+  l.time_of_day = "dusk";
+  l.weather = "mist";
+  l.randomized = true;
+  l.sun_elevation_deg = 23.25;
+  l.sun_azimuth_deg = 301.5;
+  l.cloud_cover = 0.4;
+  l.fog_density_scale = 1.75;
+  l.white_balance_k = 5900;
+  l.exposure = "auto";
+  l.exposure_compensation_ev = -0.25;
+  l.ev100 = 11.5;
+  r.lighting = l;
+  const std::string text = camera_json(r);
+  const CameraRecord back = parse_camera_json(text, "cam.json");
+  ASSERT_TRUE(back.lighting.has_value());
+  EXPECT_EQ(*back.lighting, l);
+  EXPECT_EQ(camera_json(back), text);
+  l.ev100.reset();  // no rgb: no exposure
+  r.lighting = l;
+  EXPECT_EQ(parse_camera_json(camera_json(r), "cam.json").lighting, l);
+  nlohmann::json j = nlohmann::json::parse(camera_json(r));
+  j["lighting"]["exposure"] = "manual";
+  try {
+    parse_camera_json(j.dump(), "cams/000004.json");
+    FAIL() << "a bad exposure mode was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cams/000004.json: lighting: 'exposure'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace silva::io

@@ -181,14 +181,41 @@ TEST(ShadingSky, FogScattersTheLightAroundItMostTowardsTheSun) {
   const Vec3f level_sun = Vec3f(sky.to_sun.x(), sky.to_sun.y(), 0).normalized();
   EXPECT_GT(luminance(fog.color(sky.to_sun)), luminance(fog.color(-level_sun)));
   // Away from the sun, fog is the light arriving from all around scattered evenly: the sphere's
-  // mean sky and ground radiance plus the sun's illuminance over 4π, as much as the canopy lets through.
-  const Vec3f expected = (sky.mean_radiance + sky.sun_illuminance * float(1.0 / (4.0 * kPi))) * kFogCanopyOpenness;
+  // mean sky and ground radiance plus the sun's illuminance over 4π, as much as the canopy and the
+  // fog above the camera let through.
+  const HeightFogLight through = fog_light_transmittance(day, sky.to_sun, 1.5f);
+  const Vec3f expected =
+      (sky.mean_radiance * through.diffuse + sky.sun_illuminance * float(1.0 / (4.0 * kPi)) * through.sun) *
+      kFogCanopyOpenness;
   EXPECT_LT((fog.color(-level_sun) - expected).norm(), 1e-4f * expected.norm());
   LightingPreset overcast = day;
   overcast.cloud_cover = 1;
   const Sky grey(overcast);
   const Vec3f c = HeightFog(overcast, grey, Vec3f(0, 0, 1.5f)).color(Vec3f(1, 0, 0));
   EXPECT_NEAR(c.x(), c.z(), 0.1f * c.z());  // grey under an overcast (the brown ground bounce tints it a little)
+}
+
+TEST(ShadingSky, DenseFogShadesTheLightItScatters) {
+  // Known answer: the day fog's column above 1.5 m has optical depth 0.004 e^(-0.08 x 1.5) / 0.08.
+  const LightingPreset day = preset_day();
+  const Vec3f to_sun = sun_direction(day);
+  const double depth = 0.004 * std::exp(-0.08 * 1.5) / 0.08;
+  const HeightFogLight thin = fog_light_transmittance(day, to_sun, 1.5f);
+  EXPECT_NEAR(thin.diffuse, std::exp(-kDiffuseFogPath * depth), 1e-6);
+  EXPECT_NEAR(thin.sun, std::exp(-depth / std::sin(55.0 * kPi / 180.0)), 1e-6);
+  // Mist at night (six times the night's fog) lets through much less than a clear night's haze, and
+  // the light reaching the fog grows with the camera's height above the fog layer.
+  LightingPreset night = preset_night(), mist = preset_night();
+  mist.weather = builtin_weathers().at("mist");
+  mist = with_weather(mist);
+  const HeightFogLight clear_night = fog_light_transmittance(night, sun_direction(night), 1.5f);
+  const HeightFogLight misty_night = fog_light_transmittance(mist, sun_direction(mist), 1.5f);
+  EXPECT_LT(misty_night.diffuse, 0.5f * clear_night.diffuse);
+  EXPECT_LT(misty_night.sun, 0.5f * clear_night.sun);
+  EXPECT_GT(fog_light_transmittance(mist, sun_direction(mist), 30.0f).diffuse, misty_night.diffuse);
+  LightingPreset none = day;
+  none.fog_density = 0;
+  EXPECT_EQ(fog_light_transmittance(none, to_sun, 1.5f).diffuse, 1.0f);
 }
 
 TEST(ShadingSky, FogAmountMatchesTheClosedFormIntegral) {
