@@ -66,7 +66,9 @@ TEST(GenerateLighting, DayIsBrighterThanDuskIsBrighterThanNightAndNightMistOnEve
         EXPECT_GT(n, 1.0);  // night is dark, not black
         // Inside the mist (ground views) the fog shades the moonlight it scatters: no brighter than a clear night.
         // From 15 m up the camera looks down onto the mist's moonlit top, which is brighter, as a fog sea is.
-        if (!aerial) EXPECT_LE(mean_luma(night_mist / file), n);
+        if (!aerial) {
+          EXPECT_LE(mean_luma(night_mist / file), n);
+        }
       }
     }
   }
