@@ -172,14 +172,14 @@ std::vector<uint8_t> pose_map(const CardCounts& counts, const std::vector<std::a
       x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
   }
   const double span = std::max({x1 - x0, y1 - y0, 1.0}) * (map ? 1.0 : 1.1), mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
-  const double scale = (size - 40) / span;
+  const double scale = (size - 40) / span, half = 0.5 * size;
   const auto to_px = [&](double x, double y) {
-    return cv::Point(int(std::lround(size / 2 + (x - mx) * scale)), int(std::lround(size / 2 - (y - my) * scale)));
+    return cv::Point(int(std::lround(half + (x - mx) * scale)), int(std::lround(half - (y - my) * scale)));
   };
   if (map)
     for (int r = 20; r < size - 20; ++r)
       for (int c = 20; c < size - 20; ++c) {
-        const double x = mx + (c + 0.5 - size / 2) / scale, y = my - (r + 0.5 - size / 2) / scale;
+        const double x = mx + (c + 0.5 - half) / scale, y = my - (r + 0.5 - half) / scale;
         const int mc = int(std::floor((x - map->x0) / map->metres_per_pixel));
         const int mr = int(std::floor((map->y1 - y) / map->metres_per_pixel));
         if (mc < 0 || mr < 0 || mc >= map->width || mr >= map->height) continue;
