@@ -18,7 +18,7 @@ uint32_t find_root(std::vector<uint32_t>& parent, uint32_t v) {
 
 std::vector<uint32_t> thin_cards(const Mesh& mesh, const MeshPart& part, float ratio, std::vector<Vec3f>& positions) {
   const uint32_t* idx = mesh.indices.data() + part.first_index;
-  const std::vector<uint32_t> whole(idx, idx + part.index_count);
+  std::vector<uint32_t> whole(idx, idx + part.index_count);  // returned (moved) when nothing is thinned
   // Vertices used outside this part must not move.
   std::vector<uint8_t> elsewhere(mesh.positions.size(), 0);
   for (size_t i = 0; i < mesh.indices.size(); ++i)
