@@ -47,6 +47,9 @@ Handler add_verify_command(CLI::App& root) {
                   "relative depth error, percent, that still agrees (default 0.1)")
       ->check(CLI::Range(0.0, 100.0))
       ->type_name("PCT");
+  cmd->add_flag("--full-detail", args->request.full_detail,
+                "cast every instance at full detail even when the dataset was rendered with render.lod = true "
+                "(default: at the level the rasteriser drew for each frame); measures how far LOD moves depth");
   add_threads_option(*cmd, args->threads);
   add_output_flags(*cmd, args->output);
   cmd->footer("Examples:\n  silva verify out/1234567890\n  silva verify out/1234567890 --frames 30 --sample 1 --json");

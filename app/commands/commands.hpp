@@ -86,6 +86,7 @@ struct VerifyRequest {
   double min_class = 99.9;          ///< --min-class: % of interior pixels whose class must agree.
   double min_depth = 99.9;          ///< --min-depth: % of hit pixels whose depth must agree.
   double depth_tolerance = 0.1;     ///< --depth-tolerance: relative depth error (%) that still agrees.
+  bool full_detail = false;         ///< --full-detail: cast full detail even where the dataset drew a coarser LOD.
 };
 
 /// Exit code of `silva verify` when the dataset does not meet the thresholds (CONTRACT.md).

@@ -8,6 +8,7 @@
 #include "app/cli/progress.hpp"
 #include "app/cli/version.hpp"
 #include "app/commands/commands.hpp"
+#include "app/commands/verify_drawn_scene.hpp"
 #include "app/commands/verify_report.hpp"
 #include "app/config/config_checks.hpp"
 #include "app/config/config_print.hpp"
@@ -186,7 +187,10 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
                 " frames, " + std::to_string(int(std::lround(100 * request.sample))) + " % of their pixels");
 
   world::ChunkCache cache(kCacheChunks);
-  systems::ChunkRayScene rays;
+  const bool as_drawn = loaded.config.render.lod && !request.full_detail;
+  const double ground_cover = loaded.config.render.ground_cover_distance;
+  systems::ChunkRayScene rays;  // full detail: groups per chunk, kept while frames share chunks
+  DrawnRayScene drawn;          // as drawn: each frame's instances at their LOD
   const systems::SceneBuilder builder(*setup.library);
   CompareOptions options;
   options.depth_tolerance = request.depth_tolerance / 100.0;
@@ -202,10 +206,13 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
     const Camera camera = io::read_camera_json(d.file(f, "camera", "json")).camera;
     const FrameTruth truth = read_truth(d, f, camera);
     const auto chunks = cache.require(setup.world, systems::capture_chunks(camera, setup.world.chunk_size(), lidar_reach));
-    rays.sync(chunks, builder, loaded.config.render.ground_cover_distance);
+    if (as_drawn)
+      drawn.show(builder.build(chunks, camera.position(), ground_cover), camera);
+    else
+      rays.sync(chunks, builder, ground_cover);
     const std::vector<uint32_t> pixels = sample_pixels(camera.width, camera.height, request.sample, d.seed, f.global_index);
     hits.resize(pixels.size());
-    raycast::cast_pixels(*rays.scene, camera, pixels, hits);
+    raycast::cast_pixels(as_drawn ? drawn.scene() : *rays.scene, camera, pixels, hits);
     const VerifyTally tally = compare_frame(truth, pixels, hits, d.ontology, options);
     counts.pixels.merge(tally);
     nlohmann::json frame = tally_summary(tally, counts.instances);

@@ -93,6 +93,8 @@ nlohmann::json verify_json(const io::Dataset& d, const VerifyRequest& r, const V
           {"frames_in_dataset", d.frames.size()},
           {"frames_checked", c.frames.size()},
           {"render_lod", d.manifest.at("config").at("render").at("lod")},
+          {"geometry", d.manifest.at("config").at("render").at("lod").get<bool>() && !r.full_detail ? "as_drawn"
+                                                                                                  : "full_detail"},
           {"sample", r.sample},
           {"pixels", ip + sp},
           {"thresholds",
@@ -145,11 +147,16 @@ std::string markdown_verdict(const nlohmann::json& v) {
   md += "| hit pixels with depth within " + number(th["depth_tolerance_percent"].get<double>()) + " % | ≥ " +
         number(th["depth_within_percent"].get<double>()) + " % | " +
         percent(v["depth"]["within_tolerance"].get<double>()) + " | " + pass(verdict["depth"].get<bool>()) + " |\n\n";
-  if (v["render_lod"].get<bool>())
-    md += "The dataset was rendered with `render.lod = true`: what the rasteriser drew at a coarser level (the "
-          "terrain's beyond about 34 m, assets by their size on screen) has the labels of full detail but differs "
-          "from the full-detail world in depth by its simplification error, which the depth check counts; "
-          "`render.lod = false` renders full detail everywhere.\n\n";
+  if (v["render_lod"].get<bool>() && v["geometry"] == "as_drawn")
+    md += "The dataset was rendered with `render.lod = true`: the rays met every instance at the level the "
+          "rasteriser drew for that frame (the terrain's coarse level beyond about 34 m, assets by their size on "
+          "screen), so this certifies the files against the triangles they show. `silva verify --full-detail` casts "
+          "full detail instead and measures how far the coarser levels move depth.\n\n";
+  else if (v["render_lod"].get<bool>())
+    md += "The dataset was rendered with `render.lod = true` and checked at full detail (`--full-detail`): what the "
+          "rasteriser drew at a coarser level has the labels of full detail but differs from the full-detail world "
+          "in depth by its simplification error, which the depth check counts; `render.lod = false` renders full "
+          "detail everywhere.\n\n";
   md += "Interior pixels are those whose 3×3 neighbourhood holds one class in the semantic PNG; the others are "
         "silhouette pixels, reported apart (a sub-pixel edge or an alpha texel boundary may fall on either side "
         "of a pixel centre). Class agreement at silhouettes: " +
@@ -172,8 +179,9 @@ std::string markdown_classes(const nlohmann::json& cls) {
   if (!cls["interior_confusion"].empty()) {
     md += "\nInterior disagreements (class in the file → class the ray caster hit: pixels):";
     for (const auto& e : cls["interior_confusion"])
-      md += " " + std::to_string(e["file_class"].get<int>()) + " → " + std::to_string(e["ray_class"].get<int>()) +
-            ": " + std::to_string(e["pixels"].get<uint64_t>()) + ";";
+      md.append(" ").append(std::to_string(e["file_class"].get<int>())).append(" → ")
+          .append(std::to_string(e["ray_class"].get<int>())).append(": ")
+          .append(std::to_string(e["pixels"].get<uint64_t>())).append(";");
     md.back() = '.';
     md += "\n";
   }
