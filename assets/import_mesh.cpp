@@ -1,9 +1,7 @@
 #include "assets/import_mesh.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <span>
 
 #include <assimp/GltfMaterial.h>
@@ -18,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "core/input_limits.hpp"
+#include "core/png_check.hpp"
 
 namespace silva::assets {
 
@@ -228,7 +227,7 @@ class AssetImporter {
     cv::Mat image;
     if (const aiTexture* t = scene_->GetEmbeddedTexture(ref.c_str())) {
       if (t->mHeight == 0) {
-        check_png_size(ref, {reinterpret_cast<const uint8_t*>(t->pcData), t->mWidth});
+        check_if_png(ref, {reinterpret_cast<const uint8_t*>(t->pcData), t->mWidth});
         const cv::Mat bytes(1, int(t->mWidth), CV_8U, t->pcData);
         image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
       } else {
@@ -238,11 +237,11 @@ class AssetImporter {
       }
     } else {
       const std::filesystem::path path = file_.parent_path() / ref;
-      std::ifstream in(path, std::ios::binary);
-      std::array<char, 24> head{};
-      in.read(head.data(), head.size());
-      check_png_size(ref, {reinterpret_cast<const uint8_t*>(head.data()), size_t(in.gcount())});
-      image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) fail("texture '" + ref + "' cannot be decoded: no such file next to the asset");
+      std::string bytes = limits::read_input_file(path, "texture");
+      check_if_png(ref, {reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()});
+      image = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()), cv::IMREAD_UNCHANGED);
     }
     if (image.empty()) fail("texture '" + ref + "' cannot be decoded");
     check_texture_size(ref, unsigned(image.cols), unsigned(image.rows));
@@ -257,14 +256,15 @@ class AssetImporter {
            std::to_string(side) + " per side)");
   }
 
-  /// Reads the size of a PNG from its header (before decoding allocates it); other formats pass.
-  void check_png_size(const std::string& ref, std::span<const uint8_t> bytes) const {
-    static constexpr uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (bytes.size() < 24 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return;
-    const auto be32 = [&](size_t at) {
-      return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
-    };
-    check_texture_size(ref, be32(16), be32(20));
+  /// Checks a PNG's structure and size (silva::check_png) before decoding allocates it or libpng
+  /// prints its own errors; other formats pass.
+  void check_if_png(const std::string& ref, std::span<const uint8_t> bytes) const {
+    if (!is_png(bytes)) return;
+    try {
+      check_png(bytes, "texture '" + ref + "'");
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
   }
 
   const std::filesystem::path& file_;

@@ -8,6 +8,8 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
+#include "core/png_check.hpp"
 #include "io/atomic_file.hpp"
 #include "io/capture_set.hpp"
 #include "io/json_read.hpp"
@@ -71,7 +73,14 @@ Dataset open_dataset(const fs::path& dir) {
 cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
-  cv::Mat image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  cv::Mat image;
+  if (path.extension() == ".png") {  // checked first: libpng prints its own error line on corrupt data
+    std::string bytes = limits::read_input_file(path, "image");
+    check_png({reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()}, path.string());
+    image = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()), cv::IMREAD_UNCHANGED);
+  } else {
+    image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  }
   if (image.empty()) throw InputError(path.string() + ": not a readable image");
   if (image.type() != type)
     throw InputError(path.string() + ": not a Silva image of this kind (" + std::to_string(image.channels()) +

@@ -46,7 +46,7 @@ CameraMap camera_map(const io::Dataset& d, const io::CardCounts& c, const CardIn
   try {
     LoadedConfig loaded = parse_config_text(marker->config, (d.dir / ".silva-run.json").string());
     loaded.config.seed = d.seed;
-    loaded.config.output.dir = d.dir.parent_path().string();  // the marker leaves it out
+    loaded.config.output.dir = std::filesystem::absolute(d.dir).parent_path().string();  // the marker leaves it out
     loaded.seed_given = true;
     check_config(loaded);
     const RunSetup setup = make_run_setup(loaded);

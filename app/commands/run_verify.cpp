@@ -43,7 +43,7 @@ LoadedConfig dataset_config(const io::Dataset& d) {
   LoadedConfig loaded = parse_config_text(marker->config, marker_path.string());
   loaded.config.seed = d.seed;
   loaded.seed_given = true;
-  loaded.config.output.dir = d.dir.parent_path().string();
+  loaded.config.output.dir = fs::absolute(d.dir).parent_path().string();
   check_config(loaded);
   nlohmann::json config = config_to_json(loaded);
   config["output"].erase("dir");

@@ -103,6 +103,36 @@ TEST_F(GenerateErrors, UndecodableTextureIsSilvasOneLineOnly) {
   expect_refused(args({"--overwrite"}), 2, {"a.obj", "texture 'photo.png' cannot be decoded"});
 }
 
+/// A PNG of 4 x 4 grey pixels whose header chunk fails its CRC.
+std::string corrupt_png() {
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0dIHDR\0\0\0\x04\0\0\0\x04\x08\0\0\0\0", 21);
+  png += std::string("\x8c\x7a\x6b\x5a", 4);  // not IHDR's CRC either: the first chunk already fails
+  png += std::string("\0\0\0\x02IDAT\x78\x9c\0\0\0\0", 14);
+  return png;
+}
+
+TEST_F(GenerateErrors, CorruptTextureIsSilvasOneLineOnly) {
+  // libpng prints "libpng error: ..." on stderr for a corrupt PNG unless Silva checks it first.
+  const fs::path library = dir_ / "library";
+  textured_obj_library(library, "photo.png");
+  std::ofstream(library / "photo.png", std::ios::binary) << corrupt_png();
+  const ScopedEnv env("SILVA_ASSETS", library.string());
+  expect_refused(args({"--overwrite"}), 2, {"a.obj", "texture 'photo.png'", "fails its CRC"});
+}
+
+TEST_F(GenerateErrors, CorruptDatasetImageIsOneLineOnly) {
+  const fs::path png = out_ / "0000002024" / "random" / "semantic" / "000001.png";
+  std::string bytes = read_file(png);
+  bytes[bytes.size() - 20] = char(bytes[bytes.size() - 20] ^ 0x55);  // inside the last IDAT
+  std::ofstream(png, std::ios::binary | std::ios::trunc) << bytes;
+  const ProcessResult r = run_silva({"card", (out_ / "0000002024").string()}, dir_);
+  EXPECT_EQ(r.code, 2) << r.err;
+  ASSERT_EQ(lines_of(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("semantic/000001.png: PNG chunk IDAT fails its CRC"), std::string::npos) << r.err;
+  std::ofstream(png, std::ios::binary | std::ios::trunc) << before_.at("0000002024/random/semantic/000001.png");
+}
+
 TEST_F(GenerateErrors, FarAwayPosesAreRefusedBeforeAnythingIsWritten) {
   const std::string f = write("far.json", R"({"poses": [{"position": [0, 0, 2], "yaw_deg": 0, "pitch_deg": 0, "roll_deg": 0},
     {"position": [1e12, 0, 2], "yaw_deg": 0, "pitch_deg": 0, "roll_deg": 0}]})");

@@ -116,6 +116,13 @@ TEST_F(Verify, PassesOnAFreshDatasetAndTouchesNothingElse) {
   ASSERT_EQ(run_silva({"verify", dir.string(), "--sample", "0.5", "--threads", "2", "--quiet"}, dir.parent_path()).code, 0);
   EXPECT_EQ(read_file(dir / "verify.json"), half);
   EXPECT_NE(half, first);
+  // A bare folder name from its parent folder works as well (the world's output.dir is its absolute parent).
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir.parent_path());  // the child starts there
+  const ProcessResult bare = run_silva({"verify", dir.filename().string(), "--sample", "0.5", "--quiet"}, dir.parent_path());
+  fs::current_path(cwd);
+  EXPECT_EQ(bare.code, 0) << bare.err;
+  EXPECT_EQ(read_file(dir / "verify.json"), half);
 }
 
 TEST_F(Verify, DepthShiftedByOnePercentInOneFrameFails) {
