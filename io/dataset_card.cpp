@@ -53,8 +53,10 @@ CardCounts count_frame_files(const Dataset& d, const DatasetFrame& f) {
   if (d.has("instance"))
     count_instances(pixels<uint16_t>(read_image(d.file(f, "instance", "png"), CV_16UC1)),
                     read_instance_table(d.file(f, "instance", "json")), c);
-  if (d.has("depth"))
-    for (uint16_t mm : pixels<uint16_t>(read_image(d.file(f, "depth", "png"), CV_16UC1))) count_depth(mm, c);
+  if (d.has("depth")) {
+    const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);  // a temporary would die before the loop
+    for (uint16_t mm : pixels<uint16_t>(depth)) count_depth(mm, c);
+  }
   if (d.has("lidar")) {
     const std::filesystem::path path = d.file(f, "lidar_labels", "label");
     const std::string bytes = read_text_file(path);

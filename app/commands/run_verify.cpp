@@ -167,6 +167,17 @@ Mat4d manifest_lidar_to_camera(const io::Dataset& d) {
   return m;
 }
 
+/// The frame's LiDAR scan and labels compared with its files (InputError when they do not match up).
+LidarTally check_lidar_frame(const io::Dataset& d, const io::DatasetFrame& f, const FrameTruth& truth,
+                             const Camera& camera, const Mat4d& lidar_to_camera) {
+  const std::vector<Vec3f> points = io::read_kitti_scan(d.file(f, "lidar", "bin"));
+  const std::vector<uint32_t> labels = io::read_semantic_kitti_labels(d.file(f, "lidar_labels", "label"));
+  if (labels.size() != points.size())
+    throw InputError(d.file(f, "lidar_labels", "label").string() + ": " + std::to_string(labels.size()) +
+                     " labels for " + std::to_string(points.size()) + " points");
+  return compare_lidar(truth, camera, lidar_to_camera, points, labels);
+}
+
 }  // namespace
 
 int run_verify(const VerifyRequest& request, const Reporter& reporter) {
@@ -219,12 +230,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
     frame["sequence"] = f.sequence;
     frame["frame"] = f.frame;
     if (counts.lidar) {
-      const std::vector<Vec3f> points = io::read_kitti_scan(d.file(f, "lidar", "bin"));
-      const std::vector<uint32_t> labels = io::read_semantic_kitti_labels(d.file(f, "lidar_labels", "label"));
-      if (labels.size() != points.size())
-        throw InputError(d.file(f, "lidar_labels", "label").string() + ": " + std::to_string(labels.size()) +
-                         " labels for " + std::to_string(points.size()) + " points");
-      const LidarTally lidar = compare_lidar(truth, camera, lidar_to_camera, points, labels);
+      const LidarTally lidar = check_lidar_frame(d, f, truth, camera, lidar_to_camera);
       counts.lidar->merge(lidar);
       frame["lidar_class_agreement"] = lidar.compared ? double(lidar.class_agree) / double(lidar.compared) : 1.0;
     }

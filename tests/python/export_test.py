@@ -379,7 +379,7 @@ def check_errors():
     shutil.copytree(DATASET, broken, ignore=shutil.ignore_patterns("export", "card"))
     open(os.path.join(broken, "random", "instance", "000000.png"), "w").write("not a png")
     r = silva("export", broken, "--format", "cityscapes", expect=2)
-    assert "instance/000000.png: not a readable image" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+    assert "instance/000000.png: not a PNG file" in r.stderr and r.stderr.count("\n") == 1, r.stderr
     assert not os.path.exists(os.path.join(broken, "export", "cityscapes"))
     print("errors: not a dataset, unknown format, an existing target and a corrupt label image each stop with one "
           "line, exit 2")
