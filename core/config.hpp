@@ -49,6 +49,7 @@ struct CapturesConfig {
   std::string poses_file;                          ///< captures.poses_file ("" = none)
   double clearance = 1.0;                          ///< captures.clearance (m)
   double aerial_crown_clearance = 2.0;             ///< captures.aerial_crown_clearance (m)
+  double ground_crown_clearance = 0.5;             ///< captures.ground_crown_clearance (m)
 };
 
 /// Camera model and post (`[camera]`).

@@ -56,7 +56,8 @@ const CrownProfile& CrownProfiles::operator[](size_t asset) const {
 double ClearanceProbe::reach(const WorldContext& ctx, double radius) {
   const Config& c = ctx.config;
   return radius + std::max(c.captures.clearance + ctx.max_footprint,
-                           c.captures.aerial_crown_clearance + kMaxCrownReach * kMaxScale);
+                           std::max(c.captures.aerial_crown_clearance, c.captures.ground_crown_clearance) +
+                               kMaxCrownReach * kMaxScale);
 }
 
 ClearanceProbe::ClearanceProbe(const WorldContext& ctx, const CrownProfiles& crowns,
@@ -88,6 +89,18 @@ bool ClearanceProbe::near_crown(const Vegetation& v, const Vec3d& eye, double r)
 }
 
 bool ClearanceProbe::clear(const Vec3d& eye, bool aerial) const {
+  if (!solids_clear(eye, aerial)) return false;
+  const CapturesConfig& c = ctx_.config.captures;
+  const double crown = aerial ? c.aerial_crown_clearance : c.ground_crown_clearance;
+  if (crown > 0.0)
+    for (const Vegetation& v : crowned_)
+      if (near_crown(v, eye, crown)) return false;
+  return true;
+}
+
+bool ClearanceProbe::column_clear(const Vec3d& eye) const { return solids_clear(eye, false); }
+
+bool ClearanceProbe::solids_clear(const Vec3d& eye, bool aerial) const {
   const Config& c = ctx_.config;
   const float r = float(std::max(c.captures.clearance, 1e-3));
   PlacedProxy camera;
@@ -105,9 +118,6 @@ bool ClearanceProbe::clear(const Vec3d& eye, bool aerial) const {
     if (std::hypot(v.position.x() - eye.x(), v.position.y() - eye.y()) > r + ctx_.max_footprint) continue;
     if (proxies_collide(camera, place_proxy(proxy, v.position, v.yaw, v.scale))) return false;
   }
-  if (aerial)
-    for (const Vegetation& v : crowned_)
-      if (near_crown(v, eye, c.captures.aerial_crown_clearance)) return false;
   return true;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /// @file Clearance of planned capture poses (CONTRACT.md "Capture sequences"): a camera keeps
-/// captures.clearance from every solid collision proxy, and an aerial camera also keeps
-/// captures.aerial_crown_clearance from every tree crown. Pure functions of the placed objects.
+/// captures.clearance from every solid collision proxy, and its eye keeps
+/// captures.aerial_crown_clearance (aerial) or captures.ground_crown_clearance (ground) from every
+/// tree crown. Pure functions of the placed objects.
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -49,11 +50,17 @@ class ClearanceProbe {
   /// Horizontal distance around a pose whose chunks a probe of search radius `radius` needs.
   static double reach(const WorldContext& ctx, double radius);
   /// True when a camera at `eye` keeps the clearances: a ground camera's column (from the ground
-  /// to the eye) and an aerial camera's eye keep captures.clearance from every solid proxy, and an
-  /// aerial eye keeps captures.aerial_crown_clearance from every crown.
+  /// to the eye) and an aerial camera's eye keep captures.clearance from every solid proxy, and the
+  /// eye keeps captures.aerial_crown_clearance (aerial) or captures.ground_crown_clearance (ground)
+  /// from every crown.
   bool clear(const Vec3d& eye, bool aerial) const;
+  /// True when a walker's column (ground up to `eye`) keeps captures.clearance from every solid
+  /// proxy; crowns are walked through (silva view's walk mode).
+  bool column_clear(const Vec3d& eye) const;
 
  private:
+  /// True when the camera shape (column or sphere) at `eye` keeps captures.clearance from every solid proxy.
+  bool solids_clear(const Vec3d& eye, bool aerial) const;
   /// True when a sphere of radius `r` about `eye` meets the crown of object `v`.
   bool near_crown(const Vegetation& v, const Vec3d& eye, double r) const;
 

@@ -102,7 +102,7 @@ bool ViewWorld::blocked(const Vec3d& eye) {
   const world::WorldContext& ctx = setup_.world;
   const auto chunks = schedule_->ecs().resource<world::ChunkCache>().require(
       ctx, world::chunks_in_disc(eye.x(), eye.y(), world::ClearanceProbe::reach(ctx, 0.0), ctx.chunk_size()));
-  return !world::ClearanceProbe(ctx, *crowns_, chunks, eye.x(), eye.y(), 0.0).clear(eye, false);
+  return !world::ClearanceProbe(ctx, *crowns_, chunks, eye.x(), eye.y(), 0.0).column_clear(eye);
 }
 
 world::PlannedFrame ViewWorld::view_frame(const ViewPose& pose, int width, int height) const {

@@ -94,6 +94,10 @@ std::vector<ConfigKey> build_schema() {
       {"captures.aerial_crown_clearance", T::Float,
        "aerial autopilot and random cameras keep this from every tree crown, metres",
        between(0, 20), {}, [](Config& c) -> FieldRef { return &c.captures.aerial_crown_clearance; }},
+      {"captures.ground_crown_clearance", T::Float,
+       "ground autopilot and random cameras keep their eye this far from every tree crown (low conifer "
+       "branches), metres",
+       between(0, 20), {}, [](Config& c) -> FieldRef { return &c.captures.ground_crown_clearance; }},
       {"captures.poses_file", T::String, "JSON or CSV pose file of the custom sequence (\"\" = none)",
        {}, {}, [](Config& c) -> FieldRef { return &c.captures.poses_file; }},
       {"camera.fov_deg", T::Float, "horizontal field of view, degrees", between(10, 170), {},

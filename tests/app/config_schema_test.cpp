@@ -23,7 +23,8 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
-        "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance", "lidar.preset",
+        "render.ground_cover_distance", "captures.clearance", "captures.aerial_crown_clearance",
+        "captures.ground_crown_clearance", "lidar.preset",
         "lidar.mount_offset", "lidar.mount_rpy_deg", "lidar.motion_distortion", "lighting.exposure", "lighting.exposure_compensation",
         "lighting.randomize.enabled", "lighting.randomize.sun_elevation_deg", "lighting.randomize.sun_azimuth_deg",
         "lighting.randomize.cloud_cover", "lighting.randomize.fog_density_scale",
@@ -31,7 +32,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "lighting.randomize.weathers", "lighting.randomize.weather_weights"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 69u);
+  EXPECT_EQ(names.size(), 70u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

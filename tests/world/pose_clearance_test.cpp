@@ -112,9 +112,8 @@ TEST(PoseClearance, ThousandPlannedPosesKeepTheirClearanceOrAreCounted) {
               EXPECT_FALSE(proxies_collide(ball, placed)) << library().assets[v.asset].name;
             }
           }
-          if (aerial) {
-            EXPECT_GE(crown_distance(v, eye), cfg.captures.aerial_crown_clearance - 1e-3);
-          }
+          EXPECT_GE(crown_distance(v, eye),
+                    (aerial ? cfg.captures.aerial_crown_clearance : cfg.captures.ground_crown_clearance) - 1e-3);
         }
       }
     }
