@@ -1,8 +1,11 @@
 #include "assets/import_mesh.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <span>
+#include <string_view>
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
@@ -46,6 +49,7 @@ class AssetImporter {
 
   std::vector<Mesh> run() {
     if (!std::filesystem::is_regular_file(file_)) fail("not found");
+    check_glb_container();
     scene_ = importer_.ReadFile(file_.string(), aiProcess_ValidateDataStructure);
     if (scene_ == nullptr || scene_->mRootNode == nullptr || (scene_->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
       fail(std::string("cannot be read: ") + importer_.GetErrorString());
@@ -254,6 +258,35 @@ class AssetImporter {
     if (width > side || height > side)
       fail("texture '" + ref + "' is " + std::to_string(width) + "x" + std::to_string(height) + " pixels (at most " +
            std::to_string(side) + " per side)");
+  }
+
+  /// Refuses a binary glTF whose header or chunk lengths do not fit the file: assimp allocates what
+  /// a chunk claims before reading it (4 GB for a 712-byte file found by the glb fuzz harness).
+  void check_glb_container() const {
+    std::ifstream in(file_, std::ios::binary);
+    std::array<char, 12> head{};
+    if (!in.read(head.data(), head.size()) || std::string_view(head.data(), 4) != "glTF") return;
+    const uint64_t size = std::filesystem::file_size(file_);
+    const auto le32 = [](const char* p) {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return v;  // glTF is little-endian, as every machine Silva builds for
+    };
+    if (le32(&head[4]) != 2) fail("cannot be read: binary glTF version " + std::to_string(le32(&head[4])) + ", not 2");
+    if (le32(&head[8]) != size)
+      fail("cannot be read: binary glTF header gives " + std::to_string(le32(&head[8])) + " bytes, the file has " +
+           std::to_string(size));
+    for (uint64_t at = 12; at < size;) {
+      std::array<char, 8> chunk{};
+      if (size - at < 8 || !in.read(chunk.data(), chunk.size()))
+        fail("cannot be read: binary glTF ends inside a chunk header at byte " + std::to_string(at));
+      const uint64_t length = le32(&chunk[0]);
+      if (length > size - at - 8)
+        fail("cannot be read: binary glTF chunk at byte " + std::to_string(at) + " claims " + std::to_string(length) +
+             " bytes, " + std::to_string(size - at - 8) + " remain");
+      at += 8 + length;
+      in.seekg(std::streamoff(at));
+    }
   }
 
   /// Checks a PNG's structure and size (silva::check_png) before decoding allocates it or libpng

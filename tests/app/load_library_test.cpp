@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <array>
 #include <fstream>
 #include <limits>
@@ -251,6 +253,23 @@ TEST_F(LoadLibraryTest, CorruptUserAssetsNameFileAndField) {
   expect_error(user_obj_library(*dir_, "box", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + tri,
                                 R"({"shape": "box", "center": [0, 0, 0], "half_extents": [1e300, 1, 1]})"),
                {"library.json", "collision.half_extents"});
+}
+
+TEST_F(LoadLibraryTest, BinaryGltfChunkLongerThanTheFileIsRefusedBeforeAssimp) {
+  // The glb fuzz harness's finding: a JSON chunk claiming 4 GB made assimp allocate it (out of memory).
+  const fs::path d = *dir_ / "long_chunk";
+  fs::create_directories(d);
+  std::string glb = triangle_glb({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  const uint32_t claim = 0xffff0280u;
+  std::memcpy(&glb[12], &claim, 4);
+  std::ofstream(d / "a.glb", std::ios::binary) << glb;
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.glb", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  expect_error(d / "library.json", {"a.glb", "chunk at byte 12 claims 4294902400 bytes"});
+  std::memcpy(&glb[8], &claim, 4);  // the header's total length wrong as well: that is named first
+  std::ofstream(d / "a.glb", std::ios::binary | std::ios::trunc) << glb;
+  expect_error(d / "library.json", {"a.glb", "header gives 4294902400 bytes"});
 }
 
 TEST_F(LoadLibraryTest, HugeTextureIsRefusedBeforeDecoding) {
