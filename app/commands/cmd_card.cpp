@@ -21,7 +21,7 @@ Handler add_card_command(CLI::App& root) {
   auto args = std::make_shared<CardArgs>();
   CLI::App* cmd = root.add_subcommand(
       "card",
-      "Write DIR/CARD.md, DIR/card.json and charts in DIR/card/: class pixel fractions, instance counts and "
+      "Write DIR/CARD.md, DIR/card.json and charts DIR/card_*.png: class pixel fractions, instance counts and "
       "sizes, a depth histogram, the camera positions, conditions, config differences from the defaults.");
   cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
   add_threads_option(*cmd, args->threads);

@@ -146,7 +146,7 @@ struct CardInputs {
   const RunSetup* setup = nullptr;         ///< The run's loaded inputs (library, ontology, world context).
 };
 
-/// Writes <run_dir>/CARD.md, card.json and card/*.png for a finished dataset (also at the end of generate
+/// Writes <run_dir>/CARD.md, card.json and card_*.png for a finished dataset (also at the end of generate
 /// and merge). Throws InputError / IoError.
 void write_card(const std::filesystem::path& run_dir, const CardInputs& inputs = {});
 /// `silva card`: write_card and report; returns the exit code. Throws InputError / IoError.

@@ -1,5 +1,5 @@
 // `silva card DIR`: counts the dataset's own files (io/dataset_card.hpp) and writes CARD.md, card.json and
-// the charts in card/. Every number is recounted from the label, depth and camera files, so the card is the
+// the charts card_*.png beside it. Every number is recounted from the label, depth and camera files, so the card is the
 // same for a single run, a resumed run and merged shards.
 #include <algorithm>
 #include <cstdio>
@@ -165,7 +165,7 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const Ca
           {"timings_s", run.value("timings_s", nlohmann::json())}};
 }
 
-/// The charts in <dir>/card/: classes, depth, instance_sizes and poses (PNG).
+/// The charts <dir>/card_classes.png, card_depth.png, card_instance_sizes.png and card_poses.png.
 void write_charts(const fs::path& dir, const nlohmann::json& card, const io::CardCounts& c, const CameraMap& map) {
   constexpr int w = 640, h = 320;
   std::vector<std::string> labels;
@@ -180,17 +180,17 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
     values.push_back(100.0 * row["fraction"].get<double>());
     colors.push_back(row["color"]);
   }
-  chart("classes.png", "pixel share per class (%)");
+  chart("card_classes.png", "pixel share per class (%)");
   for (int k = 0; k < io::CardCounts::kDepthBins; ++k) {
     labels.push_back(std::to_string(2 * k) + (k + 1 == io::CardCounts::kDepthBins ? "+ m" : " m"));
     values.push_back(double(c.depth[size_t(k)]));
   }
-  chart("depth.png", "depth histogram (pixels per 2 m)");
+  chart("card_depth.png", "depth histogram (pixels per 2 m)");
   for (int k = 0; k < 20; ++k) {
     labels.push_back(std::to_string(uint64_t(1) << k) + "+ px");
     values.push_back(double(c.instance_sizes[size_t(k)]));
   }
-  chart("instance_sizes.png", "instances per size (pixels, log2 bins)");
+  chart("card_instance_sizes.png", "instances per size (pixels, log2 bins)");
   std::vector<io::LegendEntry> legend;
   for (const auto& row : card["classes"])
     if (row["roles"] != "background")
@@ -200,7 +200,7 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
     background = io::MapBackground{map.map->width, map.map->height, map.map->x0, map.map->y1,
                                    map.map->metres_per_pixel, map.map->rgb};
   if (!background) legend.clear();
-  write_chart(dir / "poses.png", io::pose_map(c, kSequenceColors, kMapSize, background ? &*background : nullptr, legend),
+  write_chart(dir / "card_poses.png", io::pose_map(c, kSequenceColors, kMapSize, background ? &*background : nullptr, legend),
               io::pose_map_width(kMapSize, legend), kMapSize);
 }
 
@@ -216,7 +216,7 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
   md += "). Conditions: time of day `" + cond["time_of_day"].get<std::string>() + "`, weather `" +
         cond["weather"].get<std::string>() + "`, season `" + cond["season"].get<std::string>() + "`, " +
         (cond["aerial"].get<bool>() ? "aerial" : "ground") + " perspective.\n\n";
-  md += "## Classes\n\n![pixel share per class](card/classes.png)\n\n"
+  md += "## Classes\n\n![pixel share per class](card_classes.png)\n\n"
         "| id | class | pixel share | instances | RUGD | RELLIS-3D |\n|---|---|---|---|---|---|\n";
   for (const auto& row : card["classes"])
     md += "| " + std::to_string(row["id"].get<int>()) + " | " + row["name"].get<std::string>() + " | " +
@@ -225,10 +225,10 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
   md += "\nShares are of all " + std::to_string(c.pixels) +
         " semantic pixels, counted from the semantic PNGs; instances are instance-table rows with pixels. "
         "The RUGD and RELLIS-3D columns name the class each maps to (ontology.json).\n\n";
-  md += "## Instance sizes\n\n![instances per size](card/instance_sizes.png)\n\n";
-  md += "## Depth\n\n![depth histogram](card/depth.png)\n\n" + std::to_string(c.depth_no_hit) +
+  md += "## Instance sizes\n\n![instances per size](card_instance_sizes.png)\n\n";
+  md += "## Depth\n\n![depth histogram](card_depth.png)\n\n" + std::to_string(c.depth_no_hit) +
         " pixels hit nothing (sky or beyond camera.far); the last bin holds 64 m and farther.\n\n";
-  md += "## Cameras\n\n![camera positions](card/poses.png)\n\nTop down, world X to the right, Y up; a stroke "
+  md += "## Cameras\n\n![camera positions](card_poses.png)\n\nTop down, world X to the right, Y up; a stroke "
         "points along each view. ";
   md += map.map ? "Under them the class map of the world within " + std::to_string(int(kMapMargin)) +
                       " m of the cameras (each object a disc of its crown or top in the colour of its class seen from "
@@ -274,8 +274,7 @@ void write_card(const fs::path& run_dir, const CardInputs& inputs) {
   const io::CardCounts c = io::count_dataset(d, inputs.known ? *inputs.known : io::KnownCounts{});
   const CameraMap map = camera_map(d, c, inputs);
   const nlohmann::json card = card_json(d, c, map);
-  io::create_folder(run_dir / "card");
-  write_charts(run_dir / "card", card, c, map);
+  write_charts(run_dir, card, c, map);  // beside CARD.md: the seed folder holds only sequence folders
   io::write_file_atomic(run_dir / "card.json", card.dump(2) + "\n");
   io::write_file_atomic(run_dir / "CARD.md", card_markdown(d, card, c, map));
 }
@@ -283,7 +282,7 @@ void write_card(const fs::path& run_dir, const CardInputs& inputs) {
 int run_card(const fs::path& run_dir, const Reporter& reporter) {
   write_card(run_dir);
   reporter.result({{"ok", true}, {"run_dir", run_dir.string()}, {"card", (run_dir / "CARD.md").string()}},
-                  "wrote " + (run_dir / "CARD.md").string() + ", card.json and card/*.png");
+                  "wrote " + (run_dir / "CARD.md").string() + ", card.json and card_*.png");
   return 0;
 }
 

@@ -376,7 +376,7 @@ def check_errors():
     assert open(os.path.join(target, "colmap", "keep.txt")).read() == "mine"
     broken = os.path.join(WORK, "broken", f"{SEED:010d}")
     shutil.rmtree(os.path.dirname(broken), ignore_errors=True)
-    shutil.copytree(DATASET, broken, ignore=shutil.ignore_patterns("export", "card"))
+    shutil.copytree(DATASET, broken, ignore=shutil.ignore_patterns("export", "card_*"))
     open(os.path.join(broken, "random", "instance", "000000.png"), "w").write("not a png")
     r = silva("export", broken, "--format", "cityscapes", expect=2)
     assert "instance/000000.png: not a PNG file" in r.stderr and r.stderr.count("\n") == 1, r.stderr

@@ -54,12 +54,12 @@ def check_loader():
 
 def check_card():
     during_run = open(os.path.join(DATASET, "card.json")).read()
-    poses_during_run = open(os.path.join(DATASET, "card", "poses.png"), "rb").read()
+    poses_during_run = open(os.path.join(DATASET, "card_poses.png"), "rb").read()
     r = subprocess.run([SILVA, "card", DATASET, "--quiet"], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     # generate counts its frames in memory and maps its own world; card reads the PNGs and rebuilds the world.
     assert open(os.path.join(DATASET, "card.json")).read() == during_run, "generate's card differs from silva card's"
-    assert open(os.path.join(DATASET, "card", "poses.png"), "rb").read() == poses_during_run, "class maps differ"
+    assert open(os.path.join(DATASET, "card_poses.png"), "rb").read() == poses_during_run, "class maps differ"
     card = json.load(open(os.path.join(DATASET, "card.json")))
     ds = SilvaDataset(DATASET)
     pixels = np.zeros(256, dtype=np.int64)
@@ -87,7 +87,7 @@ def check_card():
         ids = {c["id"] for c in ontology if c["rellis"] == row["name"]}
         assert abs(row["silva_pixel_share"] - sum(pixels[i] for i in ids) / pixels.sum()) < 1e-12, row
     for chart in ("classes", "depth", "instance_sizes", "poses"):
-        assert cv2.imread(os.path.join(DATASET, "card", chart + ".png")) is not None
+        assert cv2.imread(os.path.join(DATASET, "card_" + chart + ".png")) is not None
     assert os.path.isfile(os.path.join(DATASET, "CARD.md"))
     print(f"card: class pixels, instance counts and the depth histogram equal a numpy recount of {len(ds)} frames")
 
