@@ -41,7 +41,7 @@ struct LidarWorld {
     const Vec3d p = camera.position();
     chunks = cache.require(ctx, world::chunks_in_disc(p.x(), p.y(), preset.max_range, ctx.chunk_size()));
     const Stopwatch clock;
-    rays.sync(chunks, builder, cfg.render.ground_cover_distance);
+    rays.sync(chunks, builder, cfg.render.ground_cover_distance, camera.position());
     setup_ms = 1000 * clock.seconds();
   }
   /// The sweep pose of the camera with the default mount.
@@ -85,8 +85,8 @@ void BM_LidarChunkUpdate(benchmark::State& state) {
   std::vector<std::shared_ptr<const ChunkContent>> without(w.chunks.begin() + 1, w.chunks.end());
   for (auto _ : state)
     arena.execute([&] {
-      w.rays.sync(without, w.builder, w.cfg.render.ground_cover_distance);
-      w.rays.sync(w.chunks, w.builder, w.cfg.render.ground_cover_distance);
+      w.rays.sync(without, w.builder, w.cfg.render.ground_cover_distance, w.camera.position());
+      w.rays.sync(w.chunks, w.builder, w.cfg.render.ground_cover_distance, w.camera.position());
     });
   state.counters["chunk_instances"] = double(w.chunks[0]->objects.size() + 1);
   state.counters["updates_per_iteration"] = 2;

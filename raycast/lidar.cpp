@@ -12,6 +12,8 @@ namespace silva::raycast {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+/// Columns per block of the cast order: one ray-caster packet of a ring.
+constexpr size_t kPacketColumns = 16;
 }  // namespace
 
 Vec3d beam_direction(const LidarPreset& preset, int ring, int column) {
@@ -43,54 +45,66 @@ float nir_reflectivity(Material m) {
 
 std::vector<LidarPoint> cast_sweep(const RayScene& scene, const LidarPreset& preset, const SweepPose& pose,
                                    const CastOptions& options) {
-  const int rings = int(preset.elevations_deg.size());
-  const size_t n = size_t(rings) * size_t(preset.columns);
-  std::vector<Mat3d> column_to_world(size_t(preset.columns), pose.sensor_to_world);
-  std::vector<Vec3d> column_origin(size_t(preset.columns), pose.position);
+  const size_t rings = preset.elevations_deg.size(), columns = size_t(preset.columns);
+  const size_t n = rings * columns;
+  std::vector<Mat3d> column_to_world(columns, pose.sensor_to_world);
+  std::vector<Vec3d> column_origin(columns, pose.position);
   if (pose.end) {
     const Eigen::Quaterniond q0(pose.sensor_to_world), q1(pose.end->sensor_to_world);
-    for (int c = 1; c < preset.columns; ++c) {
-      const double f = double(c) / double(preset.columns);
-      column_to_world[size_t(c)] = q0.slerp(f, q1).toRotationMatrix();
-      column_origin[size_t(c)] = pose.position + f * (pose.end->position - pose.position);
+    for (size_t c = 1; c < columns; ++c) {
+      const double f = double(c) / double(columns);
+      column_to_world[c] = q0.slerp(f, q1).toRotationMatrix();
+      column_origin[c] = pose.position + f * (pose.end->position - pose.position);
     }
   }
-  std::vector<Ray> rays(n);
-  for (int c = 0; c < preset.columns; ++c)
-    for (int r = 0; r < rings; ++r) {
-      Ray& ray = rays[size_t(c) * size_t(rings) + size_t(r)];
-      ray.origin = column_origin[size_t(c)];
-      ray.direction = column_to_world[size_t(c)] * beam_direction(preset, r, c);
-      ray.t_near = preset.min_range;
-      ray.t_far = preset.max_range;
-    }
-  std::vector<RayHit> hits(n);
-  scene.cast(rays, hits, options);
-  std::vector<Mat3d> world_to_column(column_to_world.size());
-  for (size_t c = 0; c < column_to_world.size(); ++c) world_to_column[c] = column_to_world[c].transpose();
-  std::vector<LidarPoint> points;
-  points.reserve(n);
-  for (size_t i = 0; i < n; ++i) {
-    const RayHit& h = hits[i];
-    if (!h.hit) continue;
+  // Cast order: blocks of kPacketColumns neighbouring columns, ring by ring, so that a packet of the
+  // caster holds one beam's rays a fraction of a degree apart (16 beams of one column spread over
+  // several degrees and traverse far less coherently). Firing order i = column * rings + ring.
+  const auto firing = [&](size_t k) {
+    const size_t block = k / (kPacketColumns * rings), first_column = block * kPacketColumns;
+    const size_t width = std::min(kPacketColumns, columns - first_column);
+    const size_t within = k - block * kPacketColumns * rings;
+    return (first_column + within % width) * rings + within / width;
+  };
+  std::vector<Mat3d> world_to_column(columns);
+  for (size_t c = 0; c < columns; ++c) world_to_column[c] = column_to_world[c].transpose();
+  LidarPoint none;
+  none.range = -1.0f;  // a kept return has range >= min_range >= 0
+  std::vector<LidarPoint> points(n, none);  // a slot per firing; the empty ones are squeezed out at the end
+  const auto make = [&](size_t k) {
+    const size_t i = firing(k), c = i / rings;
+    Ray ray;
+    ray.origin = column_origin[c];
+    ray.direction = column_to_world[c] * beam_direction(preset, int(i % rings), int(c));
+    ray.t_near = preset.min_range;
+    ray.t_far = preset.max_range;
+    return ray;
+  };
+  const auto take = [&](size_t k, const Ray& ray, const RayHit& h) {
+    if (!h.hit) return;
+    const size_t i = firing(k);
     Rng rng(pose.seed, pose.key, Purpose::LidarNoise, 8 * i);  // draws 8i .. 8i+4 belong to ray i
-    if (rng.uniform_double() < preset.dropout) continue;
+    if (rng.uniform_double() < preset.dropout) return;
     const double range = double(h.t) + preset.range_noise_m * double(rng.normal());
-    if (range < preset.min_range || range > preset.max_range) continue;
-    const Vec3d dir = rays[i].direction;
+    if (range < preset.min_range || range > preset.max_range) return;
+    const Vec3d& dir = ray.direction;
     const double incidence = std::abs(h.geometric_normal.cast<double>().dot(dir));
     const double clean = double(nir_reflectivity(h.material)) * incidence * std::exp(-preset.intensity_falloff * double(h.t));
-    LidarPoint p;
-    p.position = (world_to_column[i / size_t(rings)] * (dir * range)).cast<float>();
+    LidarPoint& p = points[i];
+    p.position = (world_to_column[i / rings] * (dir * range)).cast<float>();
     p.range = float(range);
     p.intensity = float(std::clamp(clean + preset.intensity_noise * double(rng.normal()), 0.0, 1.0));
-    p.column = uint16_t(i / size_t(rings));
-    p.ring = uint16_t(i % size_t(rings));
+    p.column = uint16_t(i / rings);
+    p.ring = uint16_t(i % rings);
     p.time = float(double(p.column) / (double(preset.columns) * preset.rotation_hz));
     p.role = h.role;
     p.instance_id = role_has_instances(h.role) ? h.instance_id : 0;
-    points.push_back(p);
-  }
+  };
+  CastOptions cast_options = options;
+  cast_options.normals = false;  // intensity needs only the geometric normal
+  scene.cast_each(n, make, take, cast_options);
+  points.erase(std::remove_if(points.begin(), points.end(), [](const LidarPoint& p) { return p.range < 0.0f; }),
+               points.end());
   return points;
 }
 

@@ -1,6 +1,7 @@
 /// @file The Embree 3 ray-cast scene (see ray_scene.hpp).
 #include "raycast/ray_scene.hpp"
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -24,16 +25,8 @@ struct PartInfo {
   const Mesh* mesh = nullptr;      ///< The mesh (uvs, indices).
   const MeshPart* part = nullptr;  ///< The part (role, material, mask, overlay).
   uint32_t first_triangle = 0;     ///< The part's first triangle in the mesh.
-};
-
-/// A placed instance: Embree geometry `geomID` of the top-level scene.
-struct Placed {
-  const Mesh* mesh = nullptr;                       ///< Its mesh (key of the mesh BVH).
-  Affine3f object_to_world = Affine3f::Identity();  ///< Its transform.
-  uint32_t instance_id = 0;                         ///< Packed instance id.
-  double cutoff = std::numeric_limits<double>::infinity();  ///< Visible from eyes closer than this to anchor.
-  Vec3d anchor = Vec3d::Zero();                     ///< Where cutoff is measured from.
-  uint32_t tag = 0;                                 ///< RayInstance::tag.
+  bool cutoff = false;             ///< Instances of the mesh may carry a cut-off (the filter checks it).
+  std::vector<std::array<Vec2f, 3>> corner_uvs;  ///< Masked part: its triangles' corner uvs, side by side for the filter.
 };
 
 /// The BVH of one mesh and what its parts' filters read.
@@ -44,6 +37,17 @@ struct MeshEntry {
   int users = 0;                                 ///< Instances in the scene that draw it.
 };
 
+/// A placed instance: Embree geometry `geomID` of the top-level scene.
+struct Placed {
+  const Mesh* mesh = nullptr;                       ///< Its mesh (key of the mesh BVH).
+  const MeshEntry* entry = nullptr;                 ///< Its mesh BVH's entry (parts by geomID).
+  Affine3f object_to_world = Affine3f::Identity();  ///< Its transform.
+  uint32_t instance_id = 0;                         ///< Packed instance id.
+  double cutoff = std::numeric_limits<double>::infinity();  ///< Visible from eyes closer than this to anchor.
+  Vec3d anchor = Vec3d::Zero();                     ///< Where cutoff is measured from.
+  uint32_t tag = 0;                                 ///< RayInstance::tag.
+};
+
 /// The intersect context of a cast: Embree's, then what the filter needs (Embree passes it through).
 struct CastContext {
   RTCIntersectContext rtc;                   ///< Must come first.
@@ -51,13 +55,12 @@ struct CastContext {
   Vec3d eye = Vec3d::Zero();                 ///< Where cut-offs are measured from.
 };
 
-/// True when the part's alpha mask is opaque at barycentrics (b1, b2) of triangle t (nearest texel,
-/// repeat wrap, as the rasteriser samples it).
+/// True when the part's alpha mask is opaque at barycentrics (b1, b2) of its triangle t (nearest
+/// texel, repeat wrap, as the rasteriser samples it).
 bool mask_opaque(const PartInfo& p, uint32_t t, double b1, double b2) {
-  const uint32_t* idx = &p.mesh->indices[size_t(t) * 3];
-  const Vec2f &uv0 = p.mesh->uvs[idx[0]], &uv1 = p.mesh->uvs[idx[1]], &uv2 = p.mesh->uvs[idx[2]];
-  const double u = double(uv0.x()) + b1 * double(uv1.x() - uv0.x()) + b2 * double(uv2.x() - uv0.x());
-  const double v = double(uv0.y()) + b1 * double(uv1.y() - uv0.y()) + b2 * double(uv2.y() - uv0.y());
+  const std::array<Vec2f, 3>& uv = p.corner_uvs[t];
+  const double u = double(uv[0].x()) + b1 * double(uv[1].x() - uv[0].x()) + b2 * double(uv[2].x() - uv[0].x());
+  const double v = double(uv[0].y()) + b1 * double(uv[1].y() - uv[0].y()) + b2 * double(uv[2].y() - uv[0].y());
   return p.part->mask->opaque(float(u), float(v));
 }
 
@@ -68,13 +71,15 @@ void hit_filter(const RTCFilterFunctionNArguments* args) {
   const auto* ctx = reinterpret_cast<const CastContext*>(args->context);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] != -1) continue;
-    const Placed& inst = (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)];
-    if (std::isfinite(inst.cutoff) && (inst.anchor - ctx->eye).norm() > inst.cutoff) {
-      args->valid[i] = 0;
-      continue;
+    if (part->cutoff) {
+      const Placed& inst = (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)];
+      if (std::isfinite(inst.cutoff) && (inst.anchor - ctx->eye).norm() > inst.cutoff) {
+        args->valid[i] = 0;
+        continue;
+      }
     }
     if (part->part->mask &&
-        !mask_opaque(*part, part->first_triangle + RTCHitN_primID(args->hit, args->N, i),
+        !mask_opaque(*part, RTCHitN_primID(args->hit, args->N, i),
                      RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
       args->valid[i] = 0;
   }
@@ -114,7 +119,12 @@ struct RayScene::Impl {
           rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), tris));
       if (!ix) check("index buffer");
       std::copy_n(mesh.indices.begin() + part.first_index, part.index_count, ix);
-      e.parts.push_back(std::make_unique<PartInfo>(PartInfo{&mesh, &part, part.first_index / 3}));
+      e.parts.push_back(std::make_unique<PartInfo>(PartInfo{&mesh, &part, part.first_index / 3, cutoff, {}}));
+      if (part.mask) {
+        e.parts.back()->corner_uvs.resize(tris);
+        for (size_t t = 0; t < tris; ++t)
+          for (size_t c = 0; c < 3; ++c) e.parts.back()->corner_uvs[t][c] = mesh.uvs[ix[3 * t + c]];
+      }
       rtcSetGeometryUserData(g, e.parts.back().get());
       if (part.mask || cutoff) rtcSetGeometryIntersectFilterFunction(g, hit_filter);
       rtcCommitGeometry(g);
@@ -155,9 +165,9 @@ struct RayScene::Impl {
 
   /// Fills `h` from an Embree hit of ray `ray`.
   void describe_hit(const Ray& ray, float t, unsigned inst_id, unsigned geom, unsigned prim, float bu, float bv,
-                    RayHit& h) const {
+                    bool normals, RayHit& h) const {
     const Placed& inst = placed[inst_id];
-    const PartInfo& p = *meshes.at(inst.mesh).parts[geom];
+    const PartInfo& p = *inst.entry->parts[geom];
     const Mesh& mesh = *p.mesh;
     const uint32_t* idx = &mesh.indices[size_t(p.first_triangle + prim) * 3];
     const double b1 = bu, b2 = bv, b0 = 1.0 - b1 - b2;
@@ -173,14 +183,16 @@ struct RayScene::Impl {
     ng = ng.norm() > 0.0 ? Vec3d(ng.normalized()) : Vec3d(-dir.normalized());
     if (ng.dot(dir) > 0.0) ng = -ng;
     h.geometric_normal = ng.cast<float>();
-    Vec3d n = ng;
-    if (!mesh.normals.empty()) {
-      n = lin * (b0 * mesh.normals[idx[0]].cast<double>() + b1 * mesh.normals[idx[1]].cast<double>() +
-                 b2 * mesh.normals[idx[2]].cast<double>());
-      n = n.norm() > 0.0 ? Vec3d(n.normalized()) : ng;
-      if (n.dot(dir) > 0.0) n = -n;
+    if (normals) {
+      Vec3d n = ng;
+      if (!mesh.normals.empty()) {
+        n = lin * (b0 * mesh.normals[idx[0]].cast<double>() + b1 * mesh.normals[idx[1]].cast<double>() +
+                   b2 * mesh.normals[idx[2]].cast<double>());
+        n = n.norm() > 0.0 ? Vec3d(n.normalized()) : ng;
+        if (n.dot(dir) > 0.0) n = -n;
+      }
+      h.normal = n.cast<float>();
     }
-    h.normal = n.cast<float>();
     h.role = p.part->role;
     h.material = p.part->material;
     if (p.part->overlay && !mesh.uvs.empty()) {
@@ -201,6 +213,7 @@ struct RayScene::Impl {
   CastContext context(const CastOptions& options) const {
     CastContext ctx;
     rtcInitIntersectContext(&ctx.rtc);
+    ctx.rtc.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // callers pack neighbouring rays into a packet
     ctx.placed = &placed;
     ctx.eye = options.eye;
     return ctx;
@@ -236,7 +249,7 @@ void RayScene::add_group(uint64_t key, std::span<const RayInstance> instances) {
     rtcReleaseGeometry(g);
     impl_->check("instance");
     if (impl_->placed.size() <= id) impl_->placed.resize(id + 1);
-    impl_->placed[id] = Placed{r.mesh, r.object_to_world, r.instance_id, r.cutoff, r.anchor.cast<double>(), r.tag};
+    impl_->placed[id] = Placed{r.mesh, &e, r.object_to_world, r.instance_id, r.cutoff, r.anchor.cast<double>(), r.tag};
     ids.push_back(id);
   }
 }
@@ -281,15 +294,23 @@ RayHit RayScene::cast(const Ray& ray, const CastOptions& options) const {
 
 void RayScene::cast(std::span<const Ray> rays, std::span<RayHit> hits, const CastOptions& options) const {
   if (rays.size() != hits.size()) throw std::invalid_argument("ray caster: rays and hits differ in size");
-  const size_t packets = (rays.size() + kPacket - 1) / kPacket;
+  cast_each(
+      rays.size(), [&](size_t i) { return rays[i]; }, [&](size_t i, const Ray&, const RayHit& h) { hits[i] = h; },
+      options);
+}
+
+void RayScene::cast_each(size_t count, const RayMaker& make, const HitTaker& take, const CastOptions& options) const {
+  const size_t packets = (count + kPacket - 1) / kPacket;
   tbb::parallel_for(size_t(0), packets, [&](size_t k) {
     CastContext ctx = impl_->context(options);
-    const size_t first = k * kPacket, n = std::min(kPacket, rays.size() - first);
+    const size_t first = k * kPacket, n = std::min(kPacket, count - first);
+    std::array<Ray, kPacket> rays;
     RTCRayHit16 rh;
     alignas(64) int valid[kPacket];
     for (size_t j = 0; j < kPacket; ++j) {
       valid[j] = j < n ? -1 : 0;
-      const Ray& r = rays[first + std::min(j, n - 1)];
+      if (j < n) rays[j] = make(first + j);
+      const Ray& r = rays[std::min(j, n - 1)];
       rh.ray.org_x[j] = float(r.origin.x());
       rh.ray.org_y[j] = float(r.origin.y());
       rh.ray.org_z[j] = float(r.origin.z());
@@ -307,11 +328,11 @@ void RayScene::cast(std::span<const Ray> rays, std::span<RayHit> hits, const Cas
     }
     rtcIntersect16(valid, impl_->top, &ctx.rtc, &rh);
     for (size_t j = 0; j < n; ++j) {
-      RayHit& h = hits[first + j];
-      h = RayHit{};
-      if (rh.hit.geomID[j] == RTC_INVALID_GEOMETRY_ID) continue;
-      impl_->describe_hit(rays[first + j], rh.ray.tfar[j], rh.hit.instID[0][j], rh.hit.geomID[j], rh.hit.primID[j],
-                          rh.hit.u[j], rh.hit.v[j], h);
+      RayHit h;
+      if (rh.hit.geomID[j] != RTC_INVALID_GEOMETRY_ID)
+        impl_->describe_hit(rays[j], rh.ray.tfar[j], rh.hit.instID[0][j], rh.hit.geomID[j], rh.hit.primID[j],
+                            rh.hit.u[j], rh.hit.v[j], options.normals, h);
+      take(first + j, rays[j], h);
     }
   });
 }

@@ -2,6 +2,7 @@
 /// @file An Embree 3 ray-cast scene of the streamed world: one BVH per full-detail mesh, instances on
 /// top, alpha-masked parts through an intersection filter; instances come and go in groups (chunks).
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <span>
@@ -51,6 +52,7 @@ struct RayHit {
 /// What every cast of a batch shares.
 struct CastOptions {
   Vec3d eye = Vec3d::Zero();  ///< Viewpoint the RayInstance cut-offs are measured from.
+  bool normals = true;        ///< Fill RayHit::normal; false leaves it zero (the geometric normal is always filled).
 };
 
 /// The ray-cast scene. Groups of instances (one per chunk) are added and removed by key; commit()
@@ -86,6 +88,15 @@ class RayScene {
   RayHit cast(const Ray& ray, const CastOptions& options = {}) const;
   /// Casts `rays` into `hits` (same size) in parallel on TBB, in packets of 16 consecutive rays.
   void cast(std::span<const Ray> rays, std::span<RayHit> hits, const CastOptions& options = {}) const;
+
+  /// Makes ray i of a batch.
+  using RayMaker = std::function<Ray(size_t)>;
+  /// Receives ray i's hit (a miss has hit == false).
+  using HitTaker = std::function<void(size_t, const Ray&, const RayHit&)>;
+  /// Casts rays 0 .. count-1, made by `make` when their packet (16 consecutive indices) is cast and
+  /// handed with their hits to `take`, in parallel on TBB with no array of rays or hits: `make` and
+  /// `take` run concurrently for different i. Rays that travel together belong in one packet.
+  void cast_each(size_t count, const RayMaker& make, const HitTaker& take, const CastOptions& options = {}) const;
 
  private:
   struct Impl;

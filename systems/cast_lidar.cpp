@@ -15,8 +15,18 @@
 
 namespace silva::systems {
 
+namespace {
+
+/// Distance from `p` to the box `b` (0 inside it).
+double distance_to_box(const Vec3d& p, const AABB& b) {
+  const Vec3d nearest = p.cwiseMax(b.min.cast<double>()).cwiseMin(b.max.cast<double>());
+  return (p - nearest).norm();
+}
+
+}  // namespace
+
 size_t ChunkRayScene::sync(const std::vector<std::shared_ptr<const ChunkContent>>& wanted, const SceneBuilder& builder,
-                           double ground_cover_distance) {
+                           double ground_cover_distance, const Vec3d& eye) {
   std::set<uint64_t> keep;
   for (const auto& c : wanted) keep.insert(c->coord.key());
   for (auto it = chunks.begin(); it != chunks.end();) {
@@ -24,16 +34,35 @@ size_t ChunkRayScene::sync(const std::vector<std::shared_ptr<const ChunkContent>
       ++it;
       continue;
     }
-    scene->remove_group(it->first);
+    scene->remove_group(it->second.solid_key);
+    scene->remove_group(it->second.cover_key);
     it = chunks.erase(it);
   }
   size_t added = 0;
   for (const auto& c : wanted) {
-    std::shared_ptr<const ChunkContent>& held = chunks[c->coord.key()];
-    if (held == c) continue;
-    scene->add_group(c->coord.key(), builder.ray_instances(*c, ground_cover_distance));
-    held = c;
-    ++added;
+    Held& held = chunks[c->coord.key()];
+    if (held.content != c) {
+      if (held.content) {
+        scene->remove_group(held.solid_key);
+        scene->remove_group(held.cover_key);
+      }
+      ChunkRays rays = builder.ray_instances(*c, ground_cover_distance);
+      held = Held{};
+      held.content = c;
+      held.solid_key = next_key++;
+      held.cover_key = next_key++;
+      held.ground_cover = std::move(rays.ground_cover);
+      for (const raycast::RayInstance& r : held.ground_cover) {
+        held.anchors.extend(r.anchor);
+        held.reach = std::max(held.reach, r.cutoff);
+      }
+      scene->add_group(held.solid_key, rays.solid);
+      ++added;
+    }
+    const bool show = !held.ground_cover.empty() && distance_to_box(eye, held.anchors) <= held.reach;
+    if (show && !held.cover_shown) scene->add_group(held.cover_key, held.ground_cover);
+    if (!show && held.cover_shown) scene->remove_group(held.cover_key);
+    held.cover_shown = show;
   }
   scene->commit();
   return added;
@@ -69,8 +98,9 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
         const Config& config = ctx.config;
         ChunkRayScene& rays = sys.resource<ChunkRayScene>();
-        rays.sync(sys.resource<const PreparedScene>().frame.chunks, builder, config.render.ground_cover_distance);
         const Camera& camera = work.frame.camera;
+        rays.sync(sys.resource<const PreparedScene>().frame.chunks, builder, config.render.ground_cover_distance,
+                  camera.position());
         const Mat4d sensor = camera.camera_to_world * lidar_to_camera(config.lidar);
         raycast::SweepPose pose;
         pose.sensor_to_world = sensor.block<3, 3>(0, 0);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "assets/library.hpp"
+#include "core/aabb.hpp"
 #include "core/config.hpp"
 #include "ecs/world.hpp"
 #include "raycast/ray_scene.hpp"
@@ -14,15 +15,28 @@
 
 namespace silva::systems {
 
-/// The ray-cast scene of the chunks around the active camera: one group per chunk, added when a
-/// view first needs the chunk and removed when a view no longer does.
+/// The ray-cast scene of the chunks around the active camera. Each chunk is two groups: its terrain
+/// and objects, present while a view needs the chunk, and its ground cover, present only while the
+/// eye is within the largest cut-off of it (beyond, every ray would walk its BVHs only for the
+/// cut-off filter to reject each hit).
 struct ChunkRayScene {
+  /// One chunk of the scene.
+  struct Held {
+    std::shared_ptr<const ChunkContent> content;     ///< Keeps its meshes alive.
+    uint64_t solid_key = 0;                           ///< Group of its terrain and objects.
+    uint64_t cover_key = 0;                           ///< Group of its ground cover.
+    std::vector<raycast::RayInstance> ground_cover;   ///< Its ground-cover instances.
+    AABB anchors;                                     ///< Bounds of their anchors.
+    double reach = 0;                                 ///< Their largest cut-off.
+    bool cover_shown = false;                         ///< The ground-cover group is in the scene.
+  };
   std::unique_ptr<raycast::RayScene> scene = std::make_unique<raycast::RayScene>();  ///< The BVHs.
-  std::map<uint64_t, std::shared_ptr<const ChunkContent>> chunks;  ///< Chunks in the scene (keeps their meshes alive).
-  /// Makes the scene hold exactly `chunks` (a chunk whose content changed is replaced) and commits it;
-  /// returns how many groups it added.
+  std::map<uint64_t, Held> chunks;  ///< By chunk key.
+  uint64_t next_key = 0;            ///< Next unused group key.
+  /// Makes the scene hold exactly `chunks` (a chunk whose content changed is replaced), with the
+  /// ground cover of those within reach of `eye`, and commits it; returns how many chunks it added.
   size_t sync(const std::vector<std::shared_ptr<const ChunkContent>>& chunks, const SceneBuilder& builder,
-              double ground_cover_distance);
+              double ground_cover_distance, const Vec3d& eye);
 };
 
 /// The LiDAR frame in the camera's OpenCV axes (x right, y down, z forward): [lidar] mount offset

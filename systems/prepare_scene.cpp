@@ -106,23 +106,23 @@ render::Instance SceneBuilder::object_instance(const Vegetation& v) {
   return inst;
 }
 
-std::vector<raycast::RayInstance> SceneBuilder::ray_instances(const ChunkContent& chunk,
-                                                              double ground_cover_distance) const {
+ChunkRays SceneBuilder::ray_instances(const ChunkContent& chunk, double ground_cover_distance) const {
   std::vector<render::Instance> objects;
   objects.reserve(chunk.objects.size());
   for (const Vegetation& v : chunk.objects) objects.push_back(object_instance(v));
   make_drawable(objects, 0);
-  std::vector<raycast::RayInstance> out;
-  out.reserve(objects.size() + 1);
-  out.push_back({&chunk.terrain, Affine3f::Identity(), 0});
+  ChunkRays out;
+  out.solid.push_back({&chunk.terrain, Affine3f::Identity(), 0});
   for (size_t k = 0; k < objects.size(); ++k) {
     const render::Instance& inst = objects[k];
     raycast::RayInstance r{(*asset_meshes_)[inst.mesh].lods[0], inst.object_to_world, inst.instance_id};
-    if (ground_cover_[inst.mesh] != 0) {
-      r.cutoff = ground_cover_cutoff(inst.variation, ground_cover_distance);
-      r.anchor = chunk.objects[k].position;
+    if (ground_cover_[inst.mesh] == 0) {
+      out.solid.push_back(r);
+      continue;
     }
-    out.push_back(r);
+    r.cutoff = ground_cover_cutoff(inst.variation, ground_cover_distance);
+    r.anchor = chunk.objects[k].position;
+    out.ground_cover.push_back(r);
   }
   return out;
 }

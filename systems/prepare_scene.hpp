@@ -18,6 +18,12 @@ struct FrameScene {
   std::vector<std::shared_ptr<const ChunkContent>> chunks;    ///< Owners of the terrain meshes.
 };
 
+/// A chunk's instances for the ray caster.
+struct ChunkRays {
+  std::vector<raycast::RayInstance> solid;         ///< Terrain, trees, shrubs, rocks, logs: always visible.
+  std::vector<raycast::RayInstance> ground_cover;  ///< Grass, ferns, debris: each with its cut-off and anchor.
+};
+
 /// Builds frame scenes; asset meshes come first (mesh index = asset index), then per-chunk
 /// terrain (with its coarse level as LOD 1; the trail is painted into it). Stuff (terrain, trail,
 /// grass, ferns) has instance id 0.
@@ -30,9 +36,10 @@ class SceneBuilder {
   /// the meshes of assets drawn for the first time (in parallel); copies of the builder share them.
   FrameScene build(std::vector<std::shared_ptr<const ChunkContent>> chunks, const Vec3d& eye,
                    double ground_cover_distance) const;
-  /// The same chunk for the ray caster: its terrain and every object at full detail, ground cover
-  /// carrying the cut-off build() applies (measured from each cast's eye). Makes missing meshes.
-  std::vector<raycast::RayInstance> ray_instances(const ChunkContent& chunk, double ground_cover_distance) const;
+  /// The same chunk for the ray caster at full detail: its terrain and objects, and apart from them
+  /// its ground cover, carrying the cut-off build() applies (measured from each cast's eye). Makes
+  /// missing meshes.
+  ChunkRays ray_instances(const ChunkContent& chunk, double ground_cover_distance) const;
 
  private:
   /// The instance of a placed object (its mesh index is its asset).

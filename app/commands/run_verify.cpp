@@ -220,7 +220,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
     if (as_drawn)
       drawn.show(builder.build(chunks, camera.position(), ground_cover), camera);
     else
-      rays.sync(chunks, builder, ground_cover);
+      rays.sync(chunks, builder, ground_cover, camera.position());
     const std::vector<uint32_t> pixels = sample_pixels(camera.width, camera.height, request.sample, d.seed, f.global_index);
     hits.resize(pixels.size());
     raycast::cast_pixels(as_drawn ? drawn.scene() : *rays.scene, camera, pixels, hits);
