@@ -48,17 +48,20 @@ nlohmann::json ratio_of(const nlohmann::json& results, const std::string& table,
 
 /// A Google Benchmark program run by `silva bench` (bench_programs.hpp) and where its results go.
 struct BenchProgram {
-  const char* key;     ///< Key of its results in the JSON (and its markdown section).
-  const char* name;    ///< Program in <build>/bench/.
-  const char* filter;  ///< --benchmark_filter ("" = every benchmark).
+  const char* key;           ///< Key of its results in the JSON (and its markdown section).
+  const char* name;          ///< Program in <build>/bench/.
+  const char* filter;        ///< --benchmark_filter ("" = every benchmark).
+  const char* quick_filter;  ///< --benchmark_filter of `silva bench --quick`.
 };
 
-/// The rasteriser peers; `silva view`'s frames on 2 threads (moving at 960x540 and 480x270, RGB and
-/// semantic) and its first frame; the LiDAR sweep and chunk update on 2 threads.
+/// The rasteriser peers (2 threads only under --quick); `silva view`'s frames on 2 threads (moving
+/// at 960x540 and 480x270, RGB and semantic) and its first frame; the LiDAR sweep and chunk update
+/// on 2 threads.
 constexpr BenchProgram kBenchPrograms[] = {
-    {"peers", "peers_bench", ""},
-    {"view", "view_bench", "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame"},
-    {"lidar", "lidar_bench", "Lidar.*/2/"},
+    {"peers", "peers_bench", "", "threads:2"},
+    {"view", "view_bench", "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame",
+     "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame"},
+    {"lidar", "lidar_bench", "Lidar.*/2/", "Lidar.*/2/"},
 };
 
 }  // namespace
@@ -86,7 +89,8 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
                            : time_whole_process(silva_binary_path(), plan, cores));
   for (const BenchProgram& program : kBenchPrograms) {
     results[program.key] = interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
-                                       : run_bench_program(bench_program_path(program.name), program.filter);
+                                       : run_bench_program(bench_program_path(program.name),
+                                                           request.quick ? program.quick_filter : program.filter);
     reporter.note(results[program.key].value("ran", false) ? std::string(program.name) + " ran"
                                                            : results[program.key]["note"].get<std::string>());
   }

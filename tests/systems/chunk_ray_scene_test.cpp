@@ -2,14 +2,11 @@
 // sweep through it equals, point for point, a sweep through a scene holding every instance.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
-#include "assets/factory.hpp"
 #include "raycast/lidar.hpp"
 #include "systems/cast_lidar.hpp"
+#include "tests/common/default_world.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/chunk_regions.hpp"
-#include "world/plan_captures.hpp"
 
 namespace silva {
 namespace {
@@ -36,18 +33,14 @@ bool same_points(const std::vector<LidarPoint>& a, const std::vector<LidarPoint>
 }
 
 TEST(ChunkRayScene, GroundCoverOutOfReachIsLeftOutWithoutChangingASweep) {
-  const assets::AssetLibrary library = assets::generate_library();
-  Config cfg;
-  cfg.seed = 1234567890;
-  const world::WorldContext ctx = world::make_world_context(cfg, library);
-  const std::vector<world::PlannedFrame> poses = world::plan_autopilot(ctx);
-  const Camera camera = poses[poses.size() / 2].camera;
-  const Vec3d eye = camera.position();
+  const test::DefaultWorld w;
+  const Vec3d eye = w.camera.position();
   const raycast::LidarPreset preset = thirty_two_beams();
   world::ChunkCache cache(256);
-  const auto chunks = cache.require(ctx, world::chunks_in_disc(eye.x(), eye.y(), preset.max_range, ctx.chunk_size()));
-  const systems::SceneBuilder builder(library);
-  const double distance = cfg.render.ground_cover_distance;
+  const auto chunks =
+      cache.require(w.ctx, world::chunks_in_disc(eye.x(), eye.y(), preset.max_range, w.ctx.chunk_size()));
+  const systems::SceneBuilder builder(*w.library);
+  const double distance = w.cfg.render.ground_cover_distance;
 
   raycast::RayScene everything;
   size_t all_instances = 0;

@@ -5,12 +5,11 @@
 #include <cstdio>
 #include <map>
 
-#include "assets/factory.hpp"
 #include "render/renderer.hpp"
 #include "systems/prepare_scene.hpp"
+#include "tests/common/default_world.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/chunk_regions.hpp"
-#include "world/plan_captures.hpp"
 
 namespace silva {
 namespace {
@@ -24,18 +23,13 @@ std::map<uint32_t, size_t> instance_pixels(const render::GBuffer& g) {
 }
 
 TEST(LodLabels, FixedViewAgreesWithFullDetail) {
-  const assets::AssetLibrary library = assets::generate_library();
-  Config cfg;
-  cfg.seed = 1234567890;
-  const world::WorldContext ctx = world::make_world_context(cfg, library);
-  const std::vector<world::PlannedFrame> poses = world::plan_autopilot(ctx);
-  // The middle trail point looking along the trail (bench/default_view's pose), 1920x1080.
-  const size_t yaws = cfg.captures.autopilot_yaws.size();
-  const Camera camera = poses[(poses.size() / yaws / 2) * yaws + yaws / 2].camera;
+  const test::DefaultWorld w;  // the middle trail point looking along the trail, 1920x1080
+  const Camera& camera = w.camera;
   world::ChunkCache cache(256);
   const systems::FrameScene frame =
-      systems::SceneBuilder(library).build(cache.require(ctx, world::chunks_in_view(camera, ctx.chunk_size())),
-                                           camera.position(), cfg.render.ground_cover_distance);
+      systems::SceneBuilder(*w.library)
+          .build(cache.require(w.ctx, world::chunks_in_view(camera, w.ctx.chunk_size())), camera.position(),
+                 w.cfg.render.ground_cover_distance);
   render::Renderer renderer;
   render::GBuffer full, lod;
   render::RenderOptions options;
