@@ -7,7 +7,7 @@
 namespace silva::assets {
 
 void add_ring_grid(MeshBuilder& b, std::span<const Vec3f> p, int rows, int cols) {
-  auto at = [&](int r, int c) -> const Vec3f& { return p[size_t(r * cols + (c + cols) % cols)]; };
+  auto at = [&](int r, int c) -> const Vec3f& { return p[size_t(r) * size_t(cols) + size_t((c + cols) % cols)]; };
   std::vector<uint32_t> idx;
   float length = 0;
   for (int r = 0; r < rows; ++r) {
@@ -23,8 +23,8 @@ void add_ring_grid(MeshBuilder& b, std::span<const Vec3f> p, int rows, int cols)
   const int w = cols + 1;
   for (int r = 1; r < rows; ++r)
     for (int c = 0; c < cols; ++c) {
-      const uint32_t a = idx[size_t((r - 1) * w + c)], bb = idx[size_t((r - 1) * w + c + 1)];
-      const uint32_t cc = idx[size_t(r * w + c + 1)], d = idx[size_t(r * w + c)];
+      const uint32_t a = idx[size_t(r - 1) * size_t(w) + size_t(c)], bb = idx[size_t(r - 1) * size_t(w) + size_t(c + 1)];
+      const uint32_t cc = idx[size_t(r) * size_t(w) + size_t(c + 1)], d = idx[size_t(r) * size_t(w) + size_t(c)];
       b.triangle(a, bb, cc);
       b.triangle(a, cc, d);
     }

@@ -65,8 +65,8 @@ httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter,
       reply = Reply{500, "text/plain", std::string("internal error: ") + e.what() + "\n", {}};
     }
     res.status = reply.status;
-    for (const auto& [k, v] : reply.headers) res.set_header(k.c_str(), v);
-    res.set_content(std::move(reply.body), reply.content_type.c_str());
+    for (const auto& [k, v] : reply.headers) res.set_header(k, v);
+    res.set_content(reply.body, reply.content_type);
   };
 }
 
@@ -84,7 +84,7 @@ ViewServer::ViewServer(const fs::path& page_dir) : server_(std::make_unique<http
     server_->Get(path, [text = read_page_file(file), type = mime_type(file)](const httplib::Request&,
                                                                                httplib::Response& res) {
       set_common_headers(res);
-      res.set_content(text, type.c_str());
+      res.set_content(text, type);
     });
   }
   server_->set_error_handler([](const httplib::Request&, httplib::Response& res) {

@@ -33,6 +33,7 @@ double seconds_of(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.
 /// Runs `argv` with stdout and stderr on /dev/null; its times, or an error text when it failed.
 std::variant<ProcessRun, std::string> run_once(const std::vector<std::string>& argv) {
   std::vector<char*> args;
+  args.reserve(argv.size() + 1);
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   posix_spawn_file_actions_t actions;
