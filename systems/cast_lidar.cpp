@@ -34,18 +34,14 @@ size_t ChunkRayScene::sync(const std::vector<std::shared_ptr<const ChunkContent>
       ++it;
       continue;
     }
-    scene->remove_group(it->second.solid_key);
-    scene->remove_group(it->second.cover_key);
+    drop(it->second);
     it = chunks.erase(it);
   }
   size_t added = 0;
   for (const auto& c : wanted) {
     Held& held = chunks[c->coord.key()];
     if (held.content != c) {
-      if (held.content) {
-        scene->remove_group(held.solid_key);
-        scene->remove_group(held.cover_key);
-      }
+      if (held.content) drop(held);
       ChunkRays rays = builder.ray_instances(*c, ground_cover_distance);
       held = Held{};
       held.content = c;
@@ -60,12 +56,17 @@ size_t ChunkRayScene::sync(const std::vector<std::shared_ptr<const ChunkContent>
       ++added;
     }
     const bool show = !held.ground_cover.empty() && distance_to_box(eye, held.anchors) <= held.reach;
-    if (show && !held.cover_shown) scene->add_group(held.cover_key, held.ground_cover);
-    if (!show && held.cover_shown) scene->remove_group(held.cover_key);
-    held.cover_shown = show;
+    const bool shown = scene->has_group(held.cover_key);
+    if (show && !shown) scene->add_group(held.cover_key, held.ground_cover);
+    if (!show && shown) scene->remove_group(held.cover_key);
   }
   scene->commit();
   return added;
+}
+
+void ChunkRayScene::drop(const Held& held) {
+  scene->remove_group(held.solid_key);
+  scene->remove_group(held.cover_key);
 }
 
 Mat4d lidar_to_camera(const LidarConfig& mount) {

@@ -28,7 +28,6 @@ struct ChunkRayScene {
     std::vector<raycast::RayInstance> ground_cover;   ///< Its ground-cover instances.
     AABB anchors;                                     ///< Bounds of their anchors.
     double reach = 0;                                 ///< Their largest cut-off.
-    bool cover_shown = false;                         ///< The ground-cover group is in the scene.
   };
   std::unique_ptr<raycast::RayScene> scene = std::make_unique<raycast::RayScene>();  ///< The BVHs.
   std::map<uint64_t, Held> chunks;  ///< By chunk key.
@@ -37,6 +36,8 @@ struct ChunkRayScene {
   /// ground cover of those within reach of `eye`, and commits it; returns how many chunks it added.
   size_t sync(const std::vector<std::shared_ptr<const ChunkContent>>& chunks, const SceneBuilder& builder,
               double ground_cover_distance, const Vec3d& eye);
+  /// Removes both groups of `held` from the scene.
+  void drop(const Held& held);
 };
 
 /// The LiDAR frame in the camera's OpenCV axes (x right, y down, z forward): [lidar] mount offset

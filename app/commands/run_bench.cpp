@@ -51,7 +51,7 @@ struct BenchProgram {
   const char* key;           ///< Key of its results in the JSON (and its markdown section).
   const char* name;          ///< Program in <build>/bench/.
   const char* filter;        ///< --benchmark_filter ("" = every benchmark).
-  const char* quick_filter;  ///< --benchmark_filter of `silva bench --quick`.
+  const char* quick_filter;  ///< --benchmark_filter of `silva bench --quick` (null: `filter`).
 };
 
 /// The rasteriser peers (2 threads only under --quick); `silva view`'s frames on 2 threads (moving
@@ -59,9 +59,8 @@ struct BenchProgram {
 /// on 2 threads.
 constexpr BenchProgram kBenchPrograms[] = {
     {"peers", "peers_bench", "", "threads:2"},
-    {"view", "view_bench", "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame",
-     "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame"},
-    {"lidar", "lidar_bench", "Lidar.*/2/", "Lidar.*/2/"},
+    {"view", "view_bench", "BM_ViewFrameMoving/threads:2|BM_ViewFirstFrame", nullptr},
+    {"lidar", "lidar_bench", "Lidar.*/2/", nullptr},
 };
 
 }  // namespace
@@ -90,7 +89,8 @@ int run_bench(const BenchRequest& request, const Reporter& reporter) {
   for (const BenchProgram& program : kBenchPrograms) {
     results[program.key] = interrupted ? nlohmann::json{{"ran", false}, {"note", "not run: the harness was interrupted"}}
                                        : run_bench_program(bench_program_path(program.name),
-                                                           request.quick ? program.quick_filter : program.filter);
+                                                           request.quick && program.quick_filter ? program.quick_filter
+                                                                                           : program.filter);
     reporter.note(results[program.key].value("ran", false) ? std::string(program.name) + " ran"
                                                            : results[program.key]["note"].get<std::string>());
   }
