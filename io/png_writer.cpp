@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <memory>
 #include <new>
 #include <stdexcept>
@@ -36,13 +37,22 @@ void put_u32(uint8_t* p, uint32_t v) {
   p[3] = uint8_t(v);
 }
 
-/// Writes one chunk (length, type, data, CRC) at `p`; returns the position after it.
-uint8_t* put_chunk(uint8_t* p, const char type[4], const uint8_t* data, size_t size) {
-  put_u32(p, uint32_t(size));
-  std::memcpy(p + 4, type, 4);
-  if (size) std::memcpy(p + 8, data, size);
-  put_u32(p + 8 + size, libdeflate_crc32(0, p + 4, size + 4));
-  return p + 12 + size;
+/// Appends one chunk (length, type, data, CRC) to `out`.
+void append_chunk(std::vector<uint8_t>& out, const char type[4], const uint8_t* data, size_t size) {
+  const size_t at = out.size();
+  out.resize(at + 8);
+  put_u32(out.data() + at, uint32_t(size));
+  std::memcpy(out.data() + at + 4, type, 4);
+  out.insert(out.end(), data, data + size);
+  uint8_t crc[4];
+  put_u32(crc, libdeflate_crc32(0, out.data() + at + 4, size + 4));
+  out.insert(out.end(), crc, crc + 4);
+}
+
+/// A per-thread byte buffer of at least `size` bytes, reused across calls (grown, never cleared).
+uint8_t* scratch(std::vector<uint8_t>& buffer, size_t size) {
+  if (buffer.size() < size) buffer.resize(size);
+  return buffer.data();
 }
 
 uint8_t paeth(uint8_t a, uint8_t b, uint8_t c) {
@@ -87,16 +97,21 @@ std::vector<uint8_t> encode(const uint8_t* raw, int width, int height, size_t bp
   if (options.level < 0 || options.level > 12)
     throw std::invalid_argument("PNG level must be 0..12, got " + std::to_string(options.level));
   const size_t row_bytes = size_t(width) * bpp;
-  std::vector<uint8_t> filtered(size_t(height) * (row_bytes + 1));
+  // The filtered rows and the zlib stream live in per-thread scratch: a frame's PNGs are
+  // several megabytes each, and fresh zero-filled buffers per file cost a page fault per 4 KiB.
+  thread_local std::vector<uint8_t> filtered_scratch, zlib_scratch;
+  const size_t filtered_size = size_t(height) * (row_bytes + 1);
+  uint8_t* filtered = scratch(filtered_scratch, filtered_size);
   for (int y = 0; y < height; ++y) {
-    uint8_t* dst = filtered.data() + size_t(y) * (row_bytes + 1);
+    uint8_t* dst = filtered + size_t(y) * (row_bytes + 1);
     const uint8_t* row = raw + size_t(y) * row_bytes;
     dst[0] = uint8_t(options.filter);
     filter_row(options.filter, row, y > 0 ? row - row_bytes : nullptr, row_bytes, bpp, dst + 1);
   }
   libdeflate_compressor* c = compressor_for(options.level);
-  std::vector<uint8_t> zlib(libdeflate_zlib_compress_bound(c, filtered.size()));
-  const size_t zsize = libdeflate_zlib_compress(c, filtered.data(), filtered.size(), zlib.data(), zlib.size());
+  const size_t bound = libdeflate_zlib_compress_bound(c, filtered_size);
+  uint8_t* zlib = scratch(zlib_scratch, bound);
+  const size_t zsize = libdeflate_zlib_compress(c, filtered, filtered_size, zlib, bound);
   if (zsize == 0) throw std::logic_error("libdeflate_zlib_compress: bound too small");
 
   const size_t idat_chunks = (zsize + kMaxChunk - 1) / kMaxChunk;
@@ -105,11 +120,11 @@ std::vector<uint8_t> encode(const uint8_t* raw, int width, int height, size_t bp
   put_u32(ihdr + 4, uint32_t(height));
   ihdr[8] = bit_depth;
   ihdr[9] = color_type;  // compression, filter method and interlace stay 0
-  std::vector<uint8_t> out(sizeof kSignature + (12 + sizeof ihdr) + 12 * idat_chunks + zsize + 12);
-  std::memcpy(out.data(), kSignature, sizeof kSignature);
-  uint8_t* p = put_chunk(out.data() + sizeof kSignature, "IHDR", ihdr, sizeof ihdr);
-  for (size_t at = 0; at < zsize; at += kMaxChunk) p = put_chunk(p, "IDAT", zlib.data() + at, std::min(kMaxChunk, zsize - at));
-  put_chunk(p, "IEND", nullptr, 0);
+  std::vector<uint8_t> out(std::begin(kSignature), std::end(kSignature));
+  out.reserve(sizeof kSignature + (12 + sizeof ihdr) + 12 * idat_chunks + zsize + 12);
+  append_chunk(out, "IHDR", ihdr, sizeof ihdr);
+  for (size_t at = 0; at < zsize; at += kMaxChunk) append_chunk(out, "IDAT", zlib + at, std::min(kMaxChunk, zsize - at));
+  append_chunk(out, "IEND", nullptr, 0);
   return out;
 }
 
@@ -134,12 +149,13 @@ std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb, int width, in
 std::vector<uint8_t> encode_png_grey16(std::span<const uint16_t> pixels, int width, int height,
                                        PngOptions options) {
   check_size(pixels.size(), width, height, 1, "encode_png_grey16");
-  std::vector<uint8_t> big_endian(pixels.size() * 2);
+  thread_local std::vector<uint8_t> big_endian_scratch;
+  uint8_t* big_endian = scratch(big_endian_scratch, pixels.size() * 2);
   for (size_t i = 0; i < pixels.size(); ++i) {
     big_endian[2 * i] = uint8_t(pixels[i] >> 8);
     big_endian[2 * i + 1] = uint8_t(pixels[i]);
   }
-  return encode(big_endian.data(), width, height, 2, 16, 0, options);
+  return encode(big_endian, width, height, 2, 16, 0, options);
 }
 
 }  // namespace silva::io

@@ -28,7 +28,23 @@ struct LumaRows {
   const float* down;
 };
 
-/// Filters one interior pixel at (x, y) into `dst`; `rows` hold luma() of rows y - 1, y, y + 1.
+/// Luma range of the pixel at x of the middle row and its four neighbours: max, and max - min.
+struct Contrast {
+  float hi, range;
+};
+
+/// The 3x3 cross's luma range at x (rows: luma() of the rows above, at and below).
+Contrast contrast_at(const LumaRows& rows, int x) {
+  const float lc = rows.mid[x], ln = rows.up[x], ls = rows.down[x], le = rows.mid[x + 1], lw = rows.mid[x - 1];
+  const float hi = std::max({lc, ln, ls, le, lw}), lo = std::min({lc, ln, ls, le, lw});
+  return {hi, hi - lo};
+}
+
+/// True when the pixel at x stands out enough from its cross to be filtered.
+bool on_edge(const Contrast& c) { return !(c.range < std::max(kMinContrast, kRelativeContrast * c.hi)); }
+
+/// Blends the interior edge pixel at (x, y) (on_edge) into `dst`; `rows` hold luma() of rows
+/// y - 1, y, y + 1.
 void filter_pixel(const uint8_t* src, const LumaRows& rows, int width, int x, int y, uint8_t* dst) {
   const size_t stride = size_t(width) * 3;
   const uint8_t* c = src + size_t(y) * stride + size_t(x) * 3;
@@ -37,12 +53,7 @@ void filter_pixel(const uint8_t* src, const LumaRows& rows, int width, int x, in
   const float* ln_row = rows.up + x;
   const float* ls_row = rows.down + x;
   const float lc = l[0], ln = ln_row[0], ls = ls_row[0], le = l[1], lw = l[-1];
-  const float hi = std::max({lc, ln, ls, le, lw}), lo = std::min({lc, ln, ls, le, lw});
-  const float contrast = hi - lo;
-  if (contrast < std::max(kMinContrast, kRelativeContrast * hi)) {
-    std::copy(c, c + 3, dst);
-    return;
-  }
+  const float contrast = contrast_at(rows, x).range;
   const float lne = ln_row[1], lnw = ln_row[-1], lse = ls_row[1], lsw = ls_row[-1];
   // Luma change across rows (a horizontal edge) vs across columns (a vertical edge).
   const float across_rows = 2.0f * std::abs(ln + ls - 2.0f * lc) + std::abs(lne + lse - 2.0f * le) +
@@ -78,6 +89,7 @@ void smooth_edges(const std::vector<uint8_t>& rgb, int width, int height, std::v
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& range) {
     // Luma of three consecutive rows, rolled down the range (each row's luma computed once).
     std::vector<float> ring[3];
+    std::vector<int> edges(size_t(std::max(width, 0)));  // columns of the row's edge pixels
     const auto fill = [&](std::vector<float>& l, int y) {
       l.resize(size_t(width));
       const uint8_t* row = rgb.data() + size_t(std::clamp(y, 0, height - 1)) * stride;
@@ -95,9 +107,15 @@ void smooth_edges(const std::vector<uint8_t>& rgb, int width, int height, std::v
         std::copy(row, row + stride, dst);
         continue;
       }
-      std::copy(row, row + 3, dst);
-      for (int x = 1; x + 1 < width; ++x) filter_pixel(rgb.data(), rows, width, x, y, dst + size_t(x) * 3);
-      std::copy(row + stride - 3, row + stride, dst + stride - 3);
+      // Copy the row, then filter its edge pixels, listed without a branch per pixel (which pixels
+      // are edges is as good as random in foliage).
+      std::copy(row, row + stride, dst);
+      size_t count = 0;
+      for (int x = 1; x + 1 < width; ++x) {
+        edges[count] = x;
+        count += on_edge(contrast_at(rows, x)) ? 1 : 0;
+      }
+      for (size_t k = 0; k < count; ++k) filter_pixel(rgb.data(), rows, width, edges[k], y, dst + size_t(edges[k]) * 3);
     }
   });
 }
