@@ -38,9 +38,10 @@ void smooth_edges(const std::vector<uint8_t>& rgb, int width, int height, std::v
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& range) {
     // Luma of three consecutive rows, rolled down the range (each row's luma computed once), padded
     // for the lanes' loads past the row's end.
+    // Sized once: the padding stays zero, each row's fill writes only its lumas.
     std::vector<float> ring[3];
+    for (std::vector<float>& l : ring) l.assign(size_t(width) + padding + 1, 0.0f);
     const auto fill = [&](std::vector<float>& l, int y) {
-      l.assign(size_t(width) + padding + 1, 0.0f);
       const uint8_t* row = rgb.data() + size_t(std::clamp(y, 0, height - 1)) * stride;
       for (int x = 0; x < width; ++x) l[size_t(x)] = luma(row + size_t(x) * 3);
     };
