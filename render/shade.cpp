@@ -13,7 +13,6 @@
 #include "core/base_color.hpp"
 #include "core/error.hpp"
 #include "render/auto_exposure.hpp"
-#include "render/brdf.hpp"
 #include "render/camera_encode.hpp"
 #include "render/camera_optics.hpp"
 #include "render/linear_frame.hpp"
@@ -23,6 +22,8 @@
 #include "render/shadow_lookup.hpp"
 #include "render/sky.hpp"
 #include "render/sky_fog.hpp"
+#include "render/surface_light.hpp"
+#include "render/view_directions.hpp"
 #include "render/weather_look.hpp"
 #include "render/weather_overlay.hpp"
 
@@ -99,12 +100,16 @@ struct RowTerms {
   std::vector<float> gather_footprint, gather_soil;  ///< Metres per pixel there; bare-soil weights.
   std::vector<Vec2f> gather_slope;  ///< Compacted relief gradients.
   float metres_per_depth = 0.0f;    ///< Width of one pixel per metre of depth (1 / fx).
+  SurfaceBatch rough;               ///< The row's surface pixels lit on SIMD lanes (roughness >= kSharpReflection).
+  std::vector<uint32_t> rough_at;   ///< Their columns.
+  std::vector<Vec3f> rough_out;     ///< Their radiance.
+  std::vector<Vec3f> view_dir;      ///< Unit view direction per pixel (view_directions_row).
   uint64_t bare_soil = 0;           ///< Ground pixels with a bare-soil weight >= 0.5 (all rows evaluated).
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
       : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)),
-        ground_slope(size_t(width)) {}
+        ground_slope(size_t(width)), view_dir(size_t(width)) {}
 
   /// Evaluates the terms of row v.
   void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int v) {
@@ -139,42 +144,10 @@ struct RowTerms {
   }
 };
 
-constexpr float kInvPi = 0.318309886183790672f;
-
-/// Roughness below which the mirrored sky is looked up along the reflection rather than taken from
-/// the smooth ambient fit (water films of the wet look).
-constexpr float kSharpReflection = 0.3f;
-
-/// Colour of the light a back-lit leaf lets through, per unit of its albedo: chlorophyll passes
-/// yellow-green and absorbs blue.
-const Vec3f kTransmissionTint(1.3f, 1.15f, 0.55f);
-
-/// The sky and ground light a rough surface mirrors, by the mirrored direction's z only: the
-/// ambient fit's irradiance / π straight up, level and straight down, blended linearly in z and
-/// times forest_sky_view (per frame; a few multiplies per pixel instead of the full fit).
-struct MirroredSky {
-  Vec3f up, level, down;  ///< Radiance mirrored from z = 1, 0, -1 (kcd/m²).
-
-  /// Samples `sky`'s ambient fit.
-  explicit MirroredSky(const Sky& sky)
-      : up(sky.ambient(Vec3f(0, 0, 1)) * kInvPi),
-        level((sky.ambient(Vec3f(1, 0, 0)) + sky.ambient(Vec3f(-1, 0, 0)) + sky.ambient(Vec3f(0, 1, 0)) +
-               sky.ambient(Vec3f(0, -1, 0))) * (0.25f * kInvPi)),
-        down(sky.ambient(Vec3f(0, 0, -1)) * kInvPi) {}
-
-  /// The radiance mirrored along unit direction `dir`.
-  Vec3f along(const Vec3f& dir) const {
-    const float z = dir.z();
-    return (level + ((z > 0.0f ? up : down) - level) * std::abs(z)) * forest_sky_view(z);
-  }
-};
-
-/// Linear radiance (kcd/m²) leaving a visible surface pixel towards the camera, fog included:
-/// the albedo (after the weather's look) x (sun x n·l + ambient SH irradiance x occlusion) / π with
-/// the material's relief in the shading normal, a GGX highlight of the sun, the sky mirrored by
-/// the surface's Fresnel weight, and the sun shining through back-lit thin foliage.
-Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const MirroredSky& mirror, const HeightFog& fog,
-                       const WeatherLook& look, const RowTerms& row, int u, int v, const Vec3f& view_dir) {
+/// The material inputs of the visible surface pixel (u, v): albedo (after the weather's look) and
+/// roughness, the shading normal with the material's relief, and the row's AO, sun and fog terms.
+SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, const RowTerms& row, int u, int v,
+                             const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves};
@@ -188,31 +161,9 @@ Vec3f surface_radiance(const ShadeInputs& in, const Sky& sky, const MirroredSky&
   const Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
                                     : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
   const float roughness = look.active() ? look.roughness(response.roughness, n) : response.roughness;
-  const Vec3f to_eye = -view_dir;
-  const float ao = row.ao[size_t(u)];
-  const float ambient_visible = 1.0f - in.preset.ao_strength * (1.0f - ao);
-  Vec3f diffuse = sky.ambient(n) * ambient_visible;
-  Vec3f out = Vec3f::Zero();
-  if (sky.sun_illuminance.maxCoeff() > 0.0f && row.sun_visible[size_t(u)] > 0.0f) {
-    const Vec3f sun = sky.sun_illuminance * row.sun_visible[size_t(u)];
-    const float n_dot_l = n.dot(sky.to_sun);
-    if (n_dot_l > 0.0f) {
-      diffuse += sun * n_dot_l;
-      out += sun * (ggx_specular(n, to_eye, sky.to_sun, roughness, response.f0) * n_dot_l);
-    } else if (response.translucency > 0.0f) {  // the card's normal faces the camera: the sun is behind it
-      const float through = back_light_transmission(s.normal.dot(sky.to_sun), view_dir.dot(sky.to_sun));
-      const float amount = through * response.translucency * in.preset.foliage_translucency * kInvPi;
-      out += albedo.cwiseProduct(kTransmissionTint).cwiseProduct(sun) * amount;
-    }
-  }
-  out += albedo.cwiseProduct(diffuse) * kInvPi;
-  const Vec3f mirrored_dir = reflect_to_eye(n, to_eye);
-  Vec3f mirrored = mirror.along(mirrored_dir);  // the sky seen through a rough lobe
-  if (roughness < kSharpReflection && mirrored_dir.z() > 0.0f)
-    mirrored += (sky.diffuse(mirrored_dir) * forest_sky_view(mirrored_dir.z()) - mirrored) *
-                (1.0f - roughness / kSharpReflection);
-  out += mirrored * (ambient_specular_weight(n.dot(to_eye), roughness, response.f0) * ambient_visible);
-  return fog.apply(out, row.fog_amount[size_t(u)], view_dir);
+  return {albedo,       n,           s.normal,         view_dir,
+          roughness,    response.f0, response.translucency, row.ao[size_t(u)],
+          row.sun_visible[size_t(u)], row.fog_amount[size_t(u)]};
 }
 
 }  // namespace
@@ -228,7 +179,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const Sky sky(lit);
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
   const WeatherLook look(lit.weather);
-  const MirroredSky mirror(sky);
+  const SurfaceLighting lighting(sky, fog, in.preset);
   float ev100 = lit.ev100 - in.exposure_compensation_ev;
   float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
@@ -247,12 +198,27 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       const size_t row = size_t(v) * size_t(g.width);
       Vec3f* radiance = whole_frame ? &frame.rgb[row] : row_radiance.data();
       terms.evaluate(in, sky, fog, half_ao, v);
+      terms.rough.start(size_t(g.width));
+      terms.rough_at.clear();
+      view_directions_row(in.camera, v, terms.view_dir.data());
       for (int u = 0; u < g.width; ++u) {
-        const size_t i = row + size_t(u);
-        const Vec3f dir = in.camera.ray_direction(u, v).normalized().cast<float>();
-        radiance[u] = g.depth[i] == 0.0f ? sky.radiance(dir)
-                                         : surface_radiance(in, sky, mirror, fog, look, terms, u, v, dir);
+        const Vec3f& dir = terms.view_dir[size_t(u)];
+        if (g.depth[row + size_t(u)] == 0.0f) {
+          radiance[u] = sky.radiance(dir);
+          continue;
+        }
+        const SurfaceSample sample = surface_sample(in, look, terms, u, v, dir);
+        if (sample.roughness < kSharpReflection) {
+          radiance[u] = light_surface(lighting, sample);
+          continue;
+        }
+        terms.rough.push(sample);
+        terms.rough_at.push_back(uint32_t(u));
       }
+      terms.rough.pad();
+      terms.rough_out.resize(terms.rough.padded_size());
+      light_rough_surfaces(lighting, terms.rough, terms.rough_out.data());
+      for (size_t k = 0; k < terms.rough_at.size(); ++k) radiance[terms.rough_at[k]] = terms.rough_out[k];
       if (overlay.active()) overlay.apply_row(v, radiance, g.width);
       if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     }

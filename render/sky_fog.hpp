@@ -43,6 +43,10 @@ struct HeightFog {
   Vec3f color(const Vec3f& dir) const;
   /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
   Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;
+  /// The isotropic part of color(), kcd/m².
+  const Vec3f& in_scatter() const { return in_scatter_; }
+  /// The peak of color()'s forward lobe towards the sun, kcd/m².
+  const Vec3f& sun_scatter() const { return sun_scatter_; }
 
  private:
   const Sky& sky_;
