@@ -51,8 +51,8 @@ Vec3f bark(const SurfacePoint& s, const Vec3f& base, float streak_depth, float l
 /// Foliage: base green, per-instance tint, small per-point mottling.
 Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
   const Vec3f& p = s.position;
-  const float mottle = value_noise3(p.x() * 6.0f, p.y() * 6.0f, p.z() * 6.0f, kFoliage + 1);
-  return base.cwiseProduct(variation_tint(s.variation)) * (0.8f + 0.4f * mottle);
+  const float scale = kFoliageMottleScale;
+  return foliage_albedo(base, s.variation, value_noise3(p.x() * scale, p.y() * scale, p.z() * scale, kFoliageMottleSalt));
 }
 
 /// Grass: `fresh` with `dry` patches across the ground, lighter towards the blade tip (v = 0).
@@ -117,18 +117,39 @@ Relief relief(Material m) {
 
 }  // namespace
 
+bool plain_foliage_base(Material m, Vec3f& base) {
+  switch (m) {
+    case Material::Needles: base = Vec3f(0.045f, 0.1f, 0.035f); return true;
+    case Material::Leaves: base = Vec3f(0.08f, 0.17f, 0.035f); return true;
+    case Material::Fern: base = Vec3f(0.07f, 0.18f, 0.04f); return true;
+    case Material::ShrubLeaves: base = Vec3f(0.07f, 0.14f, 0.045f); return true;
+    case Material::NeedlesSpruce: base = Vec3f(0.025f, 0.06f, 0.03f); return true;
+    case Material::NeedlesPine: base = Vec3f(0.06f, 0.1f, 0.05f); return true;
+    case Material::NeedlesLarch: base = Vec3f(0.11f, 0.2f, 0.05f); return true;
+    case Material::LeavesBeech: base = Vec3f(0.08f, 0.18f, 0.035f); return true;
+    case Material::LeavesBirch: base = Vec3f(0.13f, 0.22f, 0.045f); return true;
+    case Material::LeavesOak: base = Vec3f(0.06f, 0.14f, 0.03f); return true;
+    case Material::AutumnNeedles: base = Vec3f(0.36f, 0.25f, 0.045f); return true;
+    case Material::BareTwigs: base = Vec3f(0.11f, 0.095f, 0.08f); return true;
+    case Material::DeadBracken: base = Vec3f(0.15f, 0.115f, 0.085f); return true;
+    default: return false;
+  }
+}
+
+Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle) {
+  return base.cwiseProduct(variation_tint(variation)) * (0.8f + 0.4f * mottle);
+}
+
 Vec3f material_albedo(const SurfacePoint& s) {
+  Vec3f foliage_base;
+  if (plain_foliage_base(s.material, foliage_base)) return foliage(s, foliage_base);
   switch (s.material) {
     case Material::Ground: return ground(s);
     case Material::Trail: return trail_albedo(s);
     case Material::BarkConifer: return bark(s, Vec3f(0.15f, 0.085f, 0.055f), 0.45f, 0.0f);
     case Material::BarkBroadleaf: return bark(s, Vec3f(0.2f, 0.18f, 0.15f), 0.25f, 0.6f);
     case Material::BarkDead: return bark(s, Vec3f(0.33f, 0.31f, 0.28f), 0.5f, 0.0f);
-    case Material::Needles: return foliage(s, Vec3f(0.045f, 0.1f, 0.035f));
-    case Material::Leaves: return foliage(s, Vec3f(0.08f, 0.17f, 0.035f));
     case Material::Grass: return grass(s, Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f));
-    case Material::Fern: return foliage(s, Vec3f(0.07f, 0.18f, 0.04f));
-    case Material::ShrubLeaves: return foliage(s, Vec3f(0.07f, 0.14f, 0.045f));
     case Material::Rock: return rock_albedo(s);
     case Material::Wood: return wood(s);
     case Material::LogBark: return log_bark_albedo(s);
@@ -141,18 +162,22 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BarkBeech:
     case Material::BarkBirch:
     case Material::BarkOak: return species_bark_albedo(s);
-    case Material::NeedlesSpruce: return foliage(s, Vec3f(0.025f, 0.06f, 0.03f));
-    case Material::NeedlesPine: return foliage(s, Vec3f(0.06f, 0.1f, 0.05f));
-    case Material::NeedlesLarch: return foliage(s, Vec3f(0.11f, 0.2f, 0.05f));
-    case Material::LeavesBeech: return foliage(s, Vec3f(0.08f, 0.18f, 0.035f));
-    case Material::LeavesBirch: return foliage(s, Vec3f(0.13f, 0.22f, 0.045f));
-    case Material::LeavesOak: return foliage(s, Vec3f(0.06f, 0.14f, 0.03f));
     case Material::AutumnLeaves: return autumn_leaves(s);
-    case Material::AutumnNeedles: return foliage(s, Vec3f(0.36f, 0.25f, 0.045f));
-    case Material::BareTwigs: return foliage(s, Vec3f(0.11f, 0.095f, 0.08f));
     case Material::AutumnGrass: return grass(s, Vec3f(0.19f, 0.17f, 0.06f), Vec3f(0.3f, 0.22f, 0.09f));
     case Material::WinterGrass: return grass(s, Vec3f(0.27f, 0.24f, 0.16f), Vec3f(0.2f, 0.16f, 0.11f));
-    case Material::DeadBracken: return foliage(s, Vec3f(0.15f, 0.115f, 0.085f));
+    case Material::Needles:
+    case Material::Leaves:
+    case Material::Fern:
+    case Material::ShrubLeaves:
+    case Material::NeedlesSpruce:
+    case Material::NeedlesPine:
+    case Material::NeedlesLarch:
+    case Material::LeavesBeech:
+    case Material::LeavesBirch:
+    case Material::LeavesOak:
+    case Material::AutumnNeedles:
+    case Material::BareTwigs:
+    case Material::DeadBracken:  // plain foliage, returned above
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);

@@ -24,6 +24,21 @@ struct SurfacePoint {
 /// Linear-RGB diffuse albedo of a surface point: a pure function of the point (no state).
 Vec3f material_albedo(const SurfacePoint& s);
 
+/// Frequency (1/m) and salt of the value noise that mottles foliage.
+inline constexpr float kFoliageMottleScale = 6.0f;
+inline constexpr uint32_t kFoliageMottleSalt = kFoliage + 1;  ///< The mottle's salt.
+
+/// True when material m's albedo is plain foliage: `base` (set) tinted per instance and mottled,
+/// foliage_albedo(base, variation, value_noise3(kFoliageMottleScale p, kFoliageMottleSalt)).
+bool plain_foliage_base(Material m, Vec3f& base);
+
+/// Albedo of plain foliage of colour `base` on the instance of `variation` where its mottle noise is `mottle`.
+Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle);
+
+/// The foliage mottle noise at each of `count` points into out[i], one point per SIMD lane with
+/// value_noise3's operations in its order (the same bits on every Highway target).
+void foliage_mottles(const Vec3f* points, size_t count, float* out);
+
 /// Forest floor (Material::Ground): leaf and needle litter with grassy and mossy patches and a
 /// little bare soil, blended by noise and slope; leaf-sized detail fades out where one pixel
 /// covers more than a few centimetres. Linear-RGB colours of the layers:

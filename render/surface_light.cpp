@@ -53,8 +53,10 @@ Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s) {
 
 void SurfaceBatch::start(size_t capacity) {
   const size_t padded = (capacity + kPadding - 1) / kPadding * kPadding;
-  for (std::vector<float>& f : fields_)
-    if (f.size() < padded) f.resize(padded);
+  for (size_t f = 0; f < kFieldCount; ++f) {
+    if (fields_[f].size() < padded) fields_[f].resize(padded);
+    data_[f] = fields_[f].data();
+  }
   size_ = 0;
 }
 

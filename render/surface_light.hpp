@@ -89,7 +89,7 @@ class SurfaceBatch {
                                        s.card_normal.z(), s.view_dir.x(),    s.view_dir.y(),    s.view_dir.z(),
                                        s.roughness,       s.f0,              s.translucency,    s.ao,
                                        s.sun_visible,     s.fog};
-    for (size_t f = 0; f < kFieldCount; ++f) fields_[f][size_] = values[f];
+    for (size_t f = 0; f < kFieldCount; ++f) data_[f][size_] = values[f];
     ++size_;
   }
   /// Number of samples.
@@ -103,6 +103,7 @@ class SurfaceBatch {
 
  private:
   std::array<std::vector<float>, kFieldCount> fields_;
+  std::array<float*, kFieldCount> data_{};  ///< fields_[f].data(), as of start().
   size_t size_ = 0;
 };
 

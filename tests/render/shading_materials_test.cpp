@@ -134,5 +134,34 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
   }
 }
 
+TEST(ShadingMaterials, FoliageMottlesAreValueNoiseBitForBitOnEveryHighwayTarget) {
+  std::vector<Vec3f> p;
+  for (int i = 0; i < 53; ++i)  // odd count: full vectors plus a tail; negative coordinates floor downwards
+    p.emplace_back(float(i) * 0.37f - 9.0f, float(i * i % 41) * 0.21f - 4.0f, float(i % 7) * 1.9f - 3.0f);
+  for (int64_t target : test::highway_targets()) {
+    const test::PinnedTarget pinned(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<float> out(p.size());
+    foliage_mottles(p.data(), p.size(), out.data());
+    for (size_t i = 0; i < p.size(); ++i) {
+      const Vec3f q = p[i] * kFoliageMottleScale;
+      EXPECT_EQ(out[i], value_noise3(q.x(), q.y(), q.z(), kFoliageMottleSalt)) << i;
+    }
+  }
+}
+
+TEST(ShadingMaterials, PlainFoliageIsItsBaseTintedAndMottled) {
+  Vec3f base;
+  ASSERT_TRUE(plain_foliage_base(Material::NeedlesSpruce, base));
+  EXPECT_FALSE(plain_foliage_base(Material::Grass, base));  // grass adds patches and tips
+  EXPECT_FALSE(plain_foliage_base(Material::Ground, base));
+  ASSERT_TRUE(plain_foliage_base(Material::LeavesBirch, base));
+  const SurfacePoint s{Vec3f(1.5f, -2.25f, 7.0f), Vec3f::UnitZ(), Vec2f::Zero(), Material::LeavesBirch, 12345};
+  const Vec3f q = s.position * kFoliageMottleScale;
+  EXPECT_EQ(material_albedo(s), foliage_albedo(base, s.variation, value_noise3(q.x(), q.y(), q.z(), kFoliageMottleSalt)));
+  EXPECT_NE(foliage_albedo(base, 1, 0.5f), foliage_albedo(base, 2, 0.5f));  // tinted per instance
+  EXPECT_GT(foliage_albedo(base, 1, 1.0f).sum(), foliage_albedo(base, 1, 0.0f).sum());
+}
+
 }  // namespace
 }  // namespace silva::render

@@ -1,14 +1,14 @@
-// The per-target kernel of ground_albedo_row (render/materials.hpp), compiled once per Highway
-// target (foreach_target) and chosen at run time. Value noise, fBm and the forest-floor blend run
-// one point per float lane with the scalar functions' operations (shading_noise.hpp) in the same
-// order, no MulAdd, so every target gives the same bits.
+// The per-target kernels of ground_albedo_row and foliage_mottles (render/materials.hpp), compiled
+// once per Highway target (foreach_target) and chosen at run time. Value noise, fBm and the
+// forest-floor blend run one point per float lane with the scalar functions' operations
+// (shading_noise.hpp) in the same order, no MulAdd, so every target gives the same bits.
 #include <algorithm>
 
 #include "render/materials.hpp"
 #include "render/shading_noise.hpp"
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "render/ground_lanes.cpp"
+#define HWY_TARGET_INCLUDE "render/material_lanes.cpp"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 #include "hwy/highway.h"
 
@@ -32,11 +32,10 @@ VF smooth_weight_lanes(VF t) {
 /// mix on lanes: a + (b - a) t.
 VF mix_lanes(VF a, VF b, VF t) { return hn::Add(a, hn::Mul(hn::Sub(b, a), t)); }
 
-/// lattice_value(lattice_hash(x, y, 0, salt)) on lanes (x, y are the lattice indices as u32).
-VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
+/// lattice_value(lattice_hash(...)) on lanes from the hash's mix of the lattice indices `h`.
+VF lattice_value_of_mix(VU h, uint32_t salt) {
   const DU du;
   const DF df;
-  VU h = hn::Xor(hn::Mul(x, hn::Set(du, 0x8da6b343u)), hn::Mul(y, hn::Set(du, 0xd8163841u)));  // z = 0
   h = hn::Xor(h, hn::Set(du, salt * 0x9e3779b9u));
   h = hn::Xor(h, hn::ShiftRight<16>(h));
   h = hn::Mul(h, hn::Set(du, 0x85ebca6bu));
@@ -45,6 +44,19 @@ VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
   h = hn::Xor(h, hn::ShiftRight<16>(h));
   const auto top = hn::BitCast(DI(), hn::ShiftRight<8>(h));  // < 2^24: exact as float
   return hn::Mul(hn::ConvertTo(df, top), hn::Set(df, 1.0f / 16777216.0f));
+}
+
+/// lattice_value(lattice_hash(x, y, 0, salt)) on lanes (x, y are the lattice indices as u32).
+VF lattice_value_lanes(VU x, VU y, uint32_t salt) {
+  const DU du;
+  return lattice_value_of_mix(hn::Xor(hn::Mul(x, hn::Set(du, 0x8da6b343u)), hn::Mul(y, hn::Set(du, 0xd8163841u))), salt);
+}
+
+/// lattice_value(lattice_hash(x, y, z, salt)) on lanes.
+VF lattice_value_lanes(VU x, VU y, VU z, uint32_t salt) {
+  const DU du;
+  const VU xy = hn::Xor(hn::Mul(x, hn::Set(du, 0x8da6b343u)), hn::Mul(y, hn::Set(du, 0xd8163841u)));
+  return lattice_value_of_mix(hn::Xor(xy, hn::Mul(z, hn::Set(du, 0xcb1ab31fu))), salt);
 }
 
 /// Derivative of smooth_weight on lanes: 6 t (1 - t).
@@ -69,6 +81,25 @@ VF value_noise2_lanes(VF x, VF y, uint32_t salt, VF* dx = nullptr, VF* dy = null
     *dy = hn::Mul(hn::Sub(b, a), smooth_slope_lanes(hn::Sub(y, fy)));
   }
   return mix_lanes(a, b, wy);
+}
+
+/// value_noise3 on lanes.
+VF value_noise3_lanes(VF x, VF y, VF z, uint32_t salt) {
+  const DU du;
+  const VF fx = hn::Floor(x), fy = hn::Floor(y), fz = hn::Floor(z);
+  const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), fx)), iy = hn::BitCast(du, hn::ConvertTo(DI(), fy));
+  const VU iz = hn::BitCast(du, hn::ConvertTo(DI(), fz));
+  const VF wx = smooth_weight_lanes(hn::Sub(x, fx)), wy = smooth_weight_lanes(hn::Sub(y, fy));
+  const VF wz = smooth_weight_lanes(hn::Sub(z, fz));
+  const VU one = hn::Set(du, 1u), ix1 = hn::Add(ix, one), iy1 = hn::Add(iy, one);
+  VF layer[2];
+  for (uint32_t k = 0; k < 2; ++k) {
+    const VU zk = hn::Add(iz, hn::Set(du, k));
+    const VF v00 = lattice_value_lanes(ix, iy, zk, salt), v10 = lattice_value_lanes(ix1, iy, zk, salt);
+    const VF v01 = lattice_value_lanes(ix, iy1, zk, salt), v11 = lattice_value_lanes(ix1, iy1, zk, salt);
+    layer[k] = mix_lanes(mix_lanes(v00, v10, wx), mix_lanes(v01, v11, wx), wy);
+  }
+  return mix_lanes(layer[0], layer[1], wz);
 }
 
 /// fbm2 on lanes.
@@ -176,6 +207,23 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
   }
 }
 
+/// foliage_mottles for one target.
+void FoliageMottlesImpl(const Vec3f* points, size_t count, float* out) {
+  const DF d;
+  const size_t N = hn::Lanes(d);
+  const float* p = points->data();
+  const VF scale = hn::Set(d, kFoliageMottleScale);
+  for (size_t first = 0; first < count; first += N) {
+    const size_t lanes = std::min(N, count - first);
+    HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, res[hn::MaxLanes(d)];
+    std::copy(p + 3 * first, p + 3 * (first + lanes), pin);
+    VF px, py, pz;
+    hn::LoadInterleaved3(d, pin, px, py, pz);
+    hn::Store(value_noise3_lanes(hn::Mul(px, scale), hn::Mul(py, scale), hn::Mul(pz, scale), kFoliageMottleSalt), d, res);
+    std::copy(res, res + lanes, out + first);
+  }
+}
+
 /// The target this copy of the kernel was compiled for.
 int64_t GroundTargetImpl() { return HWY_TARGET; }
 
@@ -187,6 +235,11 @@ namespace silva::render {
 
 HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
+HWY_EXPORT(FoliageMottlesImpl);
+
+void foliage_mottles(const Vec3f* points, size_t count, float* out) {
+  HWY_DYNAMIC_DISPATCH(FoliageMottlesImpl)(points, count, out);
+}
 
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
                        Vec3f* out, float* soil, Vec2f* slope, float fallen_leaves) {
