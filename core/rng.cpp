@@ -4,20 +4,14 @@
 
 namespace silva {
 
-namespace {
-/// SplitMix64 finaliser: a bijective avalanche mix of one word.
-inline uint64_t mix64(uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-}  // namespace
-
-uint64_t rng_bits(uint64_t world_seed, uint64_t key, uint64_t purpose, uint64_t index) {
+RngStreamBits::RngStreamBits(uint64_t world_seed, uint64_t key, uint64_t purpose) {
   uint64_t h = mix64(world_seed + 0x9e3779b97f4a7c15ULL);
   h = mix64(h ^ (key + 0x632be59bd9b4e019ULL));
-  h = mix64(h ^ (purpose * 0x85ebca6bULL + 0xc2b2ae3d27d4eb4fULL));
-  return mix64(h ^ (index + 0x165667b19e3779f9ULL));
+  prefix_ = mix64(h ^ (purpose * 0x85ebca6bULL + 0xc2b2ae3d27d4eb4fULL));
+}
+
+uint64_t rng_bits(uint64_t world_seed, uint64_t key, uint64_t purpose, uint64_t index) {
+  return RngStreamBits(world_seed, key, purpose)(index);
 }
 
 uint64_t hash_combine(uint64_t a, uint64_t b) { return mix64(mix64(a) ^ (b + 0x9e3779b97f4a7c15ULL)); }

@@ -31,6 +31,26 @@ enum class Purpose : uint32_t {
   Test = 1000,
 };
 
+/// SplitMix64 finaliser: a bijective avalanche mix of one word.
+inline uint64_t mix64(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// rng_bits of one (world_seed, key, purpose) for any index: the words that do not depend on the
+/// index are mixed once, so each draw costs one mix.
+class RngStreamBits {
+ public:
+  /// Mixes the stream's three fixed words.
+  RngStreamBits(uint64_t world_seed, uint64_t key, uint64_t purpose);
+  /// rng_bits(world_seed, key, purpose, index).
+  uint64_t operator()(uint64_t index) const { return mix64(prefix_ ^ (index + 0x165667b19e3779f9ULL)); }
+
+ private:
+  uint64_t prefix_;  ///< The three fixed words, mixed.
+};
+
 /// Mixes four 64-bit words into a well-distributed 64-bit hash (stateless).
 uint64_t rng_bits(uint64_t world_seed, uint64_t key, uint64_t purpose, uint64_t index);
 

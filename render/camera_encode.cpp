@@ -41,8 +41,9 @@ void RowEncoder::encode(int v, const float* radiance, uint8_t* out) {
   const size_t w = size_t(camera_.width);
   if (noise_) {
     const uint64_t first = uint64_t(v) * w;
+    const RngStreamBits stream(seed_, key_, uint64_t(Purpose::SensorNoise));
     for (size_t u = 0; u < w; ++u) {
-      const Vec3f z = sensor_normals(seed_, key_, first + u);
+      const Vec3f z = sensor_normals(stream, first + u);
       normals_[3 * u] = z.x();
       normals_[3 * u + 1] = z.y();
       normals_[3 * u + 2] = z.z();

@@ -107,7 +107,11 @@ uint64_t noise_key(std::string_view sequence, uint64_t frame) {
 float normal_quantile(uint16_t index) { return quantile_table()[index]; }
 
 Vec3f sensor_normals(uint64_t seed, uint64_t key, uint64_t pixel) {
-  const uint64_t bits = rng_bits(seed, key, uint64_t(Purpose::SensorNoise), pixel);
+  return sensor_normals(RngStreamBits(seed, key, uint64_t(Purpose::SensorNoise)), pixel);
+}
+
+Vec3f sensor_normals(const RngStreamBits& stream, uint64_t pixel) {
+  const uint64_t bits = stream(pixel);
   const auto& q = quantile_table();
   return Vec3f(q[uint16_t(bits)], q[uint16_t(bits >> 16)], q[uint16_t(bits >> 32)]);
 }

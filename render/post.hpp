@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/rng.hpp"
 #include "core/types.hpp"
 
 namespace silva::render {
@@ -61,5 +62,8 @@ float normal_quantile(uint16_t index);
 /// Standard normal draws for the R, G, B channels of pixel `pixel`:
 /// rng_bits(seed, key, Purpose::SensorNoise, pixel) split into three 16-bit quantile indices.
 Vec3f sensor_normals(uint64_t seed, uint64_t key, uint64_t pixel);
+
+/// sensor_normals(seed, key, pixel) from the stream RngStreamBits(seed, key, Purpose::SensorNoise).
+Vec3f sensor_normals(const RngStreamBits& stream, uint64_t pixel);
 
 }  // namespace silva::render

@@ -15,6 +15,16 @@ TEST(Rng, PureFunctionOfItsInputs) {
   EXPECT_NE(rng_bits(1, 2, 3, 4), rng_bits(2, 2, 3, 4));
 }
 
+TEST(Rng, KnownAnswersOfTheFourWordMix) {
+  // SplitMix64's finaliser over (seed + c0), key + c1, purpose * c2 + c3, index + c4, computed
+  // independently of Silva (Python integers); a changed constant or order fails here.
+  EXPECT_EQ(rng_bits(1, 2, 3, 4), 0x0cb6fe1326f08991ULL);
+  EXPECT_EQ(rng_bits(1234567890, 0xdeadbeef, 40, 2073599), 0xfee7a637ec22b133ULL);
+  const RngStreamBits stream(1234567890, 0xdeadbeef, 40);
+  EXPECT_EQ(stream(2073599), 0xfee7a637ec22b133ULL);
+  EXPECT_EQ(stream(4), rng_bits(1234567890, 0xdeadbeef, 40, 4));
+}
+
 TEST(Rng, StreamEqualsIndexedDraws) {
   Rng a(7, 11, Purpose::Test);
   for (uint64_t i = 0; i < 10; ++i) EXPECT_EQ(a.next_u64(), rng_bits(7, 11, uint64_t(Purpose::Test), i));
