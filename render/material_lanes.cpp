@@ -1,4 +1,4 @@
-// The per-target kernels of ground_albedo_row and foliage_mottles (render/materials.hpp), compiled
+// The per-target kernels of ground_albedo_row and foliage_albedo_row (render/materials.hpp), compiled
 // once per Highway target (foreach_target) and chosen at run time. Value noise, fBm and the
 // forest-floor blend run one point per float lane with the scalar functions' operations
 // (shading_noise.hpp) in the same order, no MulAdd, so every target gives the same bits.
@@ -207,20 +207,40 @@ void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* fo
   }
 }
 
-/// foliage_mottles for one target.
-void FoliageMottlesImpl(const Vec3f* points, size_t count, float* out) {
+/// lattice_value(lattice_hash(x, y, z, salt)) on lanes of x with y and z the same on every lane.
+VF lattice_value_lanes(VU x, uint32_t y, uint32_t z, uint32_t salt) {
+  const DU du;
+  return lattice_value_of_mix(hn::Xor(hn::Mul(x, hn::Set(du, 0x8da6b343u)), hn::Set(du, y * 0xd8163841u ^ z * 0xcb1ab31fu)),
+                              salt);
+}
+
+/// foliage_albedo_row for one target: materials.cpp's variation_tint and foliage mottle on lanes.
+void FoliageRowImpl(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out) {
   const DF d;
+  const DU du;
   const size_t N = hn::Lanes(d);
-  const float* p = points->data();
-  const VF scale = hn::Set(d, kFoliageMottleScale);
+  const VF scale = hn::Set(d, kFoliageMottleScale), one = hn::Set(d, 1.0f);
   for (size_t first = 0; first < count; first += N) {
     const size_t lanes = std::min(N, count - first);
-    HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, res[hn::MaxLanes(d)];
-    std::copy(p + 3 * first, p + 3 * (first + lanes), pin);
-    VF px, py, pz;
+    HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, bin[3 * hn::MaxLanes(d)] = {}, res[3 * hn::MaxLanes(d)];
+    HWY_ALIGN uint32_t vin[hn::MaxLanes(d)] = {};
+    std::copy(points->data() + 3 * first, points->data() + 3 * (first + lanes), pin);
+    std::copy(bases->data() + 3 * first, bases->data() + 3 * (first + lanes), bin);
+    std::copy(variations + first, variations + first + lanes, vin);
+    VF px, py, pz, br, bg, bb;
     hn::LoadInterleaved3(d, pin, px, py, pz);
-    hn::Store(value_noise3_lanes(hn::Mul(px, scale), hn::Mul(py, scale), hn::Mul(pz, scale), kFoliageMottleSalt), d, res);
-    std::copy(res, res + lanes, out + first);
+    hn::LoadInterleaved3(d, bin, br, bg, bb);
+    const VU variation = hn::Load(du, vin);
+    const VF bright = hn::Add(hn::Set(d, 0.8f), hn::Mul(hn::Set(d, 0.4f), lattice_value_lanes(variation, 17, 3, kFoliage)));
+    const VF yellow = hn::Mul(hn::Set(d, 0.25f), lattice_value_lanes(variation, 5, 11, kFoliage));
+    const VF mottle = value_noise3_lanes(hn::Mul(px, scale), hn::Mul(py, scale), hn::Mul(pz, scale), kFoliageMottleSalt);
+    const VF shade = hn::Add(hn::Set(d, 0.8f), hn::Mul(hn::Set(d, 0.4f), mottle));
+    const VF tr = hn::Mul(bright, hn::Add(one, yellow));
+    const VF tg = hn::Mul(bright, hn::Add(one, hn::Mul(hn::Set(d, 0.4f), yellow)));
+    const VF tb = hn::Mul(bright, hn::Sub(one, hn::Mul(hn::Set(d, 0.5f), yellow)));
+    hn::StoreInterleaved3(hn::Mul(hn::Mul(br, tr), shade), hn::Mul(hn::Mul(bg, tg), shade),
+                          hn::Mul(hn::Mul(bb, tb), shade), d, res);
+    std::copy(res, res + 3 * lanes, out->data() + 3 * first);
   }
 }
 
@@ -235,10 +255,10 @@ namespace silva::render {
 
 HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
-HWY_EXPORT(FoliageMottlesImpl);
+HWY_EXPORT(FoliageRowImpl);
 
-void foliage_mottles(const Vec3f* points, size_t count, float* out) {
-  HWY_DYNAMIC_DISPATCH(FoliageMottlesImpl)(points, count, out);
+void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out) {
+  HWY_DYNAMIC_DISPATCH(FoliageRowImpl)(points, variations, bases, count, out);
 }
 
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,

@@ -35,9 +35,10 @@ bool plain_foliage_base(Material m, Vec3f& base);
 /// Albedo of plain foliage of colour `base` on the instance of `variation` where its mottle noise is `mottle`.
 Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle);
 
-/// The foliage mottle noise at each of `count` points into out[i], one point per SIMD lane with
-/// value_noise3's operations in its order (the same bits on every Highway target).
-void foliage_mottles(const Vec3f* points, size_t count, float* out);
+/// Plain-foliage albedo of `count` points (positions, instance variations, base colours) into
+/// out[i]: material_albedo's value for a point of a plain-foliage material of that base, one point
+/// per SIMD lane with the scalar operations in their order (the same bits on every Highway target).
+void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out);
 
 /// Forest floor (Material::Ground): leaf and needle litter with grassy and mossy patches and a
 /// little bare soil, blended by noise and slope; leaf-sized detail fades out where one pixel

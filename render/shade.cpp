@@ -104,16 +104,18 @@ struct RowTerms {
   std::vector<uint32_t> rough_at;   ///< Their columns.
   std::vector<Vec3f> rough_out;     ///< Their radiance.
   std::vector<Vec3f> view_dir;      ///< Unit view direction per pixel (view_directions_row).
-  std::vector<float> mottle;        ///< Foliage mottle per pixel (only plain-foliage pixels set).
+  std::vector<Vec3f> foliage;       ///< Plain-foliage albedo per pixel (only those pixels set).
   std::vector<uint32_t> foliage_at; ///< Pixels of the row with plain foliage.
-  std::vector<Vec3f> foliage_p;     ///< Their positions.
-  std::vector<float> foliage_out;   ///< Their mottles.
+  std::vector<Vec3f> foliage_p;     ///< Their positions,
+  std::vector<uint32_t> foliage_variation;  ///< instance variations,
+  std::vector<Vec3f> foliage_base;  ///< base colours
+  std::vector<Vec3f> foliage_out;   ///< and albedos.
   uint64_t bare_soil = 0;           ///< Ground pixels with a bare-soil weight >= 0.5 (all rows evaluated).
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
       : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)),
-        ground_slope(size_t(width)), view_dir(size_t(width)), mottle(size_t(width)) {}
+        ground_slope(size_t(width)), view_dir(size_t(width)), foliage(size_t(width)) {}
 
   /// Evaluates the terms of row v.
   void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int v) {
@@ -130,6 +132,8 @@ struct RowTerms {
     metres_per_depth = float(1.0 / in.camera.fx);
     foliage_at.clear();
     foliage_p.clear();
+    foliage_variation.clear();
+    foliage_base.clear();
     Vec3f base;
     for (size_t u = 0; u < w; ++u) {
       if (g.depth[row + u] == 0.0f || g.base_color[row + u] != 0) continue;
@@ -141,11 +145,14 @@ struct RowTerms {
       } else if (plain_foliage_base(g.material[row + u], base)) {
         foliage_at.push_back(uint32_t(u));
         foliage_p.push_back(g.position[row + u]);
+        foliage_variation.push_back(g.variation[row + u]);
+        foliage_base.push_back(base);
       }
     }
     foliage_out.resize(foliage_at.size());
-    foliage_mottles(foliage_p.data(), foliage_at.size(), foliage_out.data());
-    for (size_t k = 0; k < foliage_at.size(); ++k) mottle[foliage_at[k]] = foliage_out[k];
+    foliage_albedo_row(foliage_p.data(), foliage_variation.data(), foliage_base.data(), foliage_at.size(),
+                       foliage_out.data());
+    for (size_t k = 0; k < foliage_at.size(); ++k) foliage[foliage_at[k]] = foliage_out[k];
     gather_out.resize(ground_at.size());
     gather_soil.resize(ground_at.size());
     gather_slope.resize(ground_at.size());
@@ -170,7 +177,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   Vec3f base;
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])
                  : procedural_ground                   ? row.ground[size_t(u)]
-                 : plain_foliage_base(s.material, base) ? foliage_albedo(base, s.variation, row.mottle[size_t(u)])
+                 : plain_foliage_base(s.material, base) ? row.foliage[size_t(u)]
                                                        : material_albedo(s);
   if (look.active()) albedo = look.albedo(albedo, s);
   const MaterialResponse response = material_response(s.material);

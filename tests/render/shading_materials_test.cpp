@@ -134,19 +134,26 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
   }
 }
 
-TEST(ShadingMaterials, FoliageMottlesAreValueNoiseBitForBitOnEveryHighwayTarget) {
-  std::vector<Vec3f> p;
-  for (int i = 0; i < 53; ++i)  // odd count: full vectors plus a tail; negative coordinates floor downwards
+TEST(ShadingMaterials, FoliageRowsAreMaterialAlbedoBitForBitOnEveryHighwayTarget) {
+  const Material kinds[] = {Material::Needles, Material::LeavesBirch, Material::NeedlesSpruce, Material::DeadBracken};
+  std::vector<Vec3f> p, base;
+  std::vector<uint32_t> variation;
+  std::vector<Vec3f> want;
+  for (int i = 0; i < 53; ++i) {  // odd count: full vectors plus a tail; negative coordinates floor downwards
+    const Material m = kinds[i % 4];
     p.emplace_back(float(i) * 0.37f - 9.0f, float(i * i % 41) * 0.21f - 4.0f, float(i % 7) * 1.9f - 3.0f);
+    variation.push_back(uint32_t(i) * 2654435761u);
+    Vec3f b;
+    ASSERT_TRUE(plain_foliage_base(m, b));
+    base.push_back(b);
+    want.push_back(material_albedo(SurfacePoint{p.back(), Vec3f::UnitZ(), Vec2f::Zero(), m, variation.back()}));
+  }
   for (int64_t target : test::highway_targets()) {
     const test::PinnedTarget pinned(target);
     SCOPED_TRACE(hwy::TargetName(target));
-    std::vector<float> out(p.size());
-    foliage_mottles(p.data(), p.size(), out.data());
-    for (size_t i = 0; i < p.size(); ++i) {
-      const Vec3f q = p[i] * kFoliageMottleScale;
-      EXPECT_EQ(out[i], value_noise3(q.x(), q.y(), q.z(), kFoliageMottleSalt)) << i;
-    }
+    std::vector<Vec3f> out(p.size());
+    foliage_albedo_row(p.data(), variation.data(), base.data(), p.size(), out.data());
+    for (size_t i = 0; i < p.size(); ++i) EXPECT_EQ(out[i], want[i]) << i;
   }
 }
 
