@@ -11,7 +11,7 @@
 namespace silva::render {
 namespace {
 
-SurfacePoint point(Material m, Vec3f p = Vec3f(3.2f, -1.7f, 0.4f), uint32_t variation = 1) {
+SurfacePoint point(Material m, const Vec3f& p = Vec3f(3.2f, -1.7f, 0.4f), uint32_t variation = 1) {
   return {p, Vec3f(0, 0, 1), Vec2f(0.5f, 0.5f), m, variation};
 }
 
