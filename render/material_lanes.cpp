@@ -130,6 +130,7 @@ VF mix_channel(VF c, const float* to, int k, VF t) { return mix_lanes(c, hn::Set
 /// ground_albedo_row for one target.
 void GroundRowImpl(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count, Vec3f* out,
                    float* soil_out, Vec2f* slope_out, float fallen_leaves) {
+  if (count == 0) return;  // the arrays may be empty vectors' null data()
   const DF d;
   const size_t N = hn::Lanes(d);
   const float* p = positions->data();

@@ -102,6 +102,7 @@ VF ambient(DF d, const IrradianceSH& sh, int c, const V3& n) {
 
 /// light_rough_surfaces for one target.
 void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch& batch, Vec3f* out) {
+  if (batch.padded_size() == 0) return;  // `out` may be an empty vector's null data()
   const DF d;
   const size_t N = hn::Lanes(d);
   const Sky& sky = lighting.sky;
