@@ -3,21 +3,30 @@ BUILD      ?= build
 JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 SILVA      := $(BUILD)/silva
+# Each target that configures $(BUILD) says whether it builds the tests and the benchmarks, so the
+# CLI alone configures (and builds) without GTest or Google Benchmark installed.
+CONFIGURE   = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: deps configure build cli run test bench sanitize tidy fuzz test-slurm check-export clean
+.PHONY: deps deps-test configure build cli run test bench sanitize tidy fuzz test-slurm clean
 
+## make deps: the packages building and running the CLI needs; make deps-test: those and the test tools
 deps:
 	@bash scripts/install-deps.sh
 
-configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
+deps-test:
+	@bash scripts/install-deps.sh --test
+
+configure: deps-test
+	@$(CONFIGURE) -DSILVA_BUILD_TESTS=ON -DSILVA_BUILD_BENCH=ON $(CMAKE_ARGS) >/dev/null
 
 ## make build: every target (the CLI, the asset library, the tests and the benchmarks)
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-## make cli: only the silva CLI (its post-build step generates the asset library); no test or benchmark
-cli: configure
+## make cli: only the silva CLI (its post-build step generates the asset library); no test or benchmark,
+## and none of the packages only they need
+cli: deps
+	@$(CONFIGURE) -DSILVA_BUILD_TESTS=OFF -DSILVA_BUILD_BENCH=OFF $(CMAKE_ARGS) >/dev/null
 	@cmake --build $(BUILD) --target silva -j $(JOBS)
 
 ## make run: build the Release CLI only and generate the demo dataset of configs/demo.toml into ./out/
@@ -34,12 +43,13 @@ test: build
 ## a markdown report and charts; see bench/README.md). BENCH_ARGS=--quick for the ~3-minute subset.
 bench:
 	@bash scripts/install-deps.sh --bench
-	@$(MAKE) --no-print-directory build
+	@$(CONFIGURE) -DSILVA_BUILD_TESTS=OFF -DSILVA_BUILD_BENCH=ON $(CMAKE_ARGS) >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
 	$(SILVA) bench $(BENCH_ARGS)
 
 ## make sanitize: ASan + UBSan build (optimised, so the rendering tests stay quick) running every test
-sanitize: deps
-	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DSILVA_SANITIZE=ON -DSILVA_BUILD_BENCH=OFF >/dev/null
+sanitize: deps-test
+	@cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DSILVA_SANITIZE=ON -DSILVA_BUILD_TESTS=ON -DSILVA_BUILD_BENCH=OFF >/dev/null
 	@cmake --build build-sanitize -j $(JOBS)
 	cd build-sanitize && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)
 
@@ -47,7 +57,7 @@ sanitize: deps
 ## its own folder (no compile needed, only compile_commands.json)
 tidy:
 	@bash scripts/install-deps.sh --tidy
-	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B build-tidy -DCMAKE_BUILD_TYPE=Release -DSILVA_BUILD_TESTS=OFF -DSILVA_BUILD_BENCH=OFF >/dev/null
 	bash scripts/tidy.sh build-tidy $(JOBS)
 
 ## make fuzz: the libFuzzer harnesses of every input reader (clang-14, ASan + UBSan, docs/fuzzing.md),
