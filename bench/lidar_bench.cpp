@@ -6,8 +6,8 @@
 
 #include <tbb/task_arena.h>
 
-#include "app/config/data_path.hpp"
-#include "app/config/lidar_config.hpp"
+#include "pipeline/config/data_path.hpp"
+#include "pipeline/config/lidar_config.hpp"
 #include "assets/factory.hpp"
 #include "core/stopwatch.hpp"
 #include "systems/cast_lidar.hpp"
@@ -31,8 +31,8 @@ struct LidarWorld {
   double setup_ms = 0;
   LidarWorld() {
     cfg.seed = 1234567890;
-    const toml::table file = toml::parse_file(app::data_path("configs/lidar.toml").string());
-    preset = app::parse_lidar_presets(*file["lidar"]["presets"].as_table(), "lidar.toml").at("os1_64");
+    const toml::table file = toml::parse_file(pipeline::data_path("configs/lidar.toml").string());
+    preset = pipeline::parse_lidar_presets(*file["lidar"]["presets"].as_table(), "lidar.toml").at("os1_64");
     const world::WorldContext ctx = world::make_world_context(cfg, *library);
     const std::vector<world::PlannedFrame> poses = world::plan_autopilot(ctx);
     const size_t yaws = cfg.captures.autopilot_yaws.size();

@@ -1,4 +1,4 @@
-// `silva view`'s frame path (app/commands/view_world.hpp): the schedule's Stream .. Render for a
+// `silva view`'s frame path (pipeline/schedule/view_world.hpp): the schedule's Stream .. Render for a
 // free camera, the view's shading or label colours, and JPEG encoding, on the default world (default
 // config, seed 1234567890), at the page's 960x540 and at the 480x270 it asks for while moving
 // (mode 0 = RGB, 1 = semantic). Moving: each frame walks 0.3 m along the trail (3 m/s, the page's walk
@@ -11,8 +11,8 @@
 #include <cmath>
 #include <memory>
 
-#include "app/commands/view_world.hpp"
-#include "app/config/config_loader.hpp"
+#include "pipeline/schedule/view_world.hpp"
+#include "pipeline/config/config_loader.hpp"
 
 namespace {
 
@@ -24,17 +24,17 @@ constexpr const char* kSeed = "1234567890";
 constexpr int kWidth = 960, kHeight = 540;
 
 /// The default config with the benchmark seed.
-app::LoadedConfig bench_config() {
-  app::ConfigSources sources;
+pipeline::LoadedConfig bench_config() {
+  pipeline::ConfigSources sources;
   sources.seed = kSeed;
-  return app::load_config(sources);
+  return pipeline::load_config(sources);
 }
 
 /// The pose `i` frames into the walk: along the trail, yaw swinging +-30 degrees about it.
-app::ViewPose walk_pose(const nlohmann::json& trail, int i) {
+pipeline::ViewPose walk_pose(const nlohmann::json& trail, int i) {
   const double s = std::fmod(0.3 * i, double(trail.size() - 1));
   const nlohmann::json& p = trail[size_t(s)];
-  app::ViewPose pose;
+  pipeline::ViewPose pose;
   pose.walk = true;
   pose.position = Vec3d(p[0].get<double>(), p[1].get<double>(), 0);
   pose.yaw_deg = p[3].get<double>() + 30 * std::sin(0.05 * i);
@@ -43,17 +43,17 @@ app::ViewPose walk_pose(const nlohmann::json& trail, int i) {
 
 void BM_ViewFrameMoving(benchmark::State& state) {
   const int threads = int(state.range(0));
-  const app::ViewMode mode = app::ViewMode(state.range(1));
+  const pipeline::ViewMode mode = pipeline::ViewMode(state.range(1));
   const int width = int(state.range(2)), height = width * kHeight / kWidth;
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    app::ViewWorld view(bench_config());
+    pipeline::ViewWorld view(bench_config());
     const nlohmann::json trail = view.trail(1.0);
     int i = 0;
     view.render(walk_pose(trail, i++), mode, width, height);  // warm: the start's chunks
     double schedule = 0, raster = 0, shade = 0, encode = 0;
     for (auto _ : state) {
-      const app::ViewFrame f = view.render(walk_pose(trail, i++), mode, width, height);
+      const pipeline::ViewFrame f = view.render(walk_pose(trail, i++), mode, width, height);
       benchmark::DoNotOptimize(f.jpeg.data());
       schedule += f.schedule_ms, raster += f.raster_ms, shade += f.shade_ms, encode += f.encode_ms;
     }
@@ -68,7 +68,7 @@ void BM_ViewFrameMoving(benchmark::State& state) {
   });
 }
 BENCHMARK(BM_ViewFrameMoving)
-    ->ArgsProduct({{1, 2}, {int(app::ViewMode::Rgb), int(app::ViewMode::Semantic)}, {kWidth, kWidth / 2}})
+    ->ArgsProduct({{1, 2}, {int(pipeline::ViewMode::Rgb), int(pipeline::ViewMode::Semantic)}, {kWidth, kWidth / 2}})
     ->ArgNames({"threads", "mode", "width"})
     ->Iterations(40)
     ->Unit(benchmark::kMillisecond)
@@ -78,8 +78,8 @@ void BM_ViewFirstFrame(benchmark::State& state) {
   tbb::task_arena arena(int(state.range(0)));
   arena.execute([&] {
     for (auto _ : state) {
-      app::ViewWorld view(bench_config());
-      const app::ViewFrame f = view.render(view.start_pose(), app::ViewMode::Rgb, kWidth, kHeight);
+      pipeline::ViewWorld view(bench_config());
+      const pipeline::ViewFrame f = view.render(view.start_pose(), pipeline::ViewMode::Rgb, kWidth, kHeight);
       benchmark::DoNotOptimize(f.jpeg.data());
     }
   });

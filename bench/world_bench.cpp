@@ -12,7 +12,7 @@
 #include "world/chunk_regions.hpp"
 #include "world/placement.hpp"
 #include "world/resolve.hpp"
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 
 namespace {
 
@@ -59,7 +59,7 @@ void run_default_world(benchmark::State& state, const Config& cfg, int threads) 
   world::BuiltWorld w;
   for (auto _ : state) {
     const world::WorldContext ctx = world::make_world_context(cfg, library());
-    w = app::build_default_world(ctx, threads);
+    w = pipeline::build_default_world(ctx, threads);
     benchmark::DoNotOptimize(w.hash);
   }
   report(state, w, threads);

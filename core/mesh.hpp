@@ -33,7 +33,7 @@ struct AlphaMask {
 };
 
 /// A second role and material painted into a part by its uv.x (a signed distance in metres to the
-/// overlay's edge, negative inside): render/surface_overlay.hpp turns it into a blend weight with a
+/// overlay's edge, negative inside): core/surface_overlay.hpp turns it into a blend weight with a
 /// ragged edge; pixels whose weight reaches 0.5 take `role`, those it touches take `material`.
 struct PartOverlay {
   Role role = Role::Trail;              ///< Class where the overlay weight is at least 0.5.

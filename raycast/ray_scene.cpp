@@ -11,7 +11,7 @@
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
 
-#include "render/surface_overlay.hpp"
+#include "core/surface_overlay.hpp"
 
 namespace silva::raycast {
 
@@ -198,10 +198,10 @@ struct RayScene::Impl {
     if (p.part->overlay && !mesh.uvs.empty()) {
       const float uvx = float(b0 * double(mesh.uvs[idx[0]].x()) + b1 * double(mesh.uvs[idx[1]].x()) +
                               b2 * double(mesh.uvs[idx[2]].x()));
-      if (uvx < render::kOverlayMargin + render::kOverlayRagged) {
-        const float edge = render::overlay_edge(uvx, h.position);
-        if (edge < render::kOverlayMargin) h.material = p.part->overlay->material;
-        if (render::overlay_weight(edge) >= 0.5f) h.role = p.part->overlay->role;
+      if (uvx < kOverlayMargin + kOverlayRagged) {
+        const float edge = overlay_edge(uvx, h.position);
+        if (edge < kOverlayMargin) h.material = p.part->overlay->material;
+        if (overlay_weight(edge) >= 0.5f) h.role = p.part->overlay->role;
       }
     }
     h.instance_id = inst.instance_id;

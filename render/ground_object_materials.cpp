@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "render/noise_salts.hpp"
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 
 namespace silva::render {
 

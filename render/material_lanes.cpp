@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "render/materials.hpp"
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "render/material_lanes.cpp"

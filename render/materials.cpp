@@ -5,7 +5,7 @@
 
 #include "render/ground_object_materials.hpp"
 #include "render/bark_materials.hpp"
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 #include "render/trail_material.hpp"
 
 namespace silva::render {

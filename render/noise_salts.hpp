@@ -16,13 +16,13 @@ enum NoiseSalt : uint32_t {
   kGroundFineSalt = 0x180,   ///< Brightness grain.
   kGroundLeafSalt = 0x1a0,   ///< Leaf-sized blotches (and + 1: speckle).
   kGroundFallenSalt = 0x1c0, ///< Drifts of freshly fallen autumn leaves (and + 8: their hue).
-  // Trail (render/trail_material.cpp, render/surface_overlay.cpp).
+  // Trail (render/trail_material.cpp).
   kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
   kTrailStone = 0x420,       ///< Embedded stones.
   kTrailRoot = 0x440,        ///< Roots crossing.
   kTrailLitter = 0x460,      ///< Litter drifting in at the edges.
   kTrailFringe = 0x480,      ///< Worn grassy fringe.
-  kTrailRaggedEdge = 0x4a0,  ///< Ragged edge of the overlay.
+  // 0x4a0: the ragged edge of the overlay (kOverlayEdgeSalt, core/surface_overlay.cpp).
   // Bark, foliage and wood (render/materials.cpp).
   kBarkStreak = 0x600,       ///< Vertical bark streaks.
   kBarkLichen = 0x620,       ///< Lichen on bark.

@@ -8,7 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/raster_conventions.hpp"
-#include "render/surface_overlay.hpp"
+#include "core/surface_overlay.hpp"
 
 namespace silva::render {
 

@@ -13,7 +13,7 @@ namespace silva::render {
 /// Fills every pixel of `out` (resized to the camera when needed): for a hit, re-intersects the
 /// pixel's centre ray with the stored triangle in double (Moller-Trumbore) and writes metric z,
 /// world position, the interpolated vertex normal turned to face the camera, uv, the part's role
-/// and material (or its overlay's, render/surface_overlay.hpp), and the instance's id and
+/// and material (or its overlay's, core/surface_overlay.hpp), and the instance's id and
 /// variation; a miss gets depth 0 and role Background.
 /// `instance_lod` is the LOD each instance was drawn with.
 void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityBuffer& vis,

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 #include "render/sky_model.hpp"
 
 namespace silva::render {

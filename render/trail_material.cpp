@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "render/noise_salts.hpp"
-#include "render/shading_noise.hpp"
-#include "render/surface_overlay.hpp"
+#include "core/value_noise.hpp"
+#include "core/surface_overlay.hpp"
 
 namespace silva::render {
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file The trail's look (Material::Trail), painted into the ground by the terrain's overlay
-/// (render/surface_overlay.hpp): compacted, lighter soil with embedded stones and roots crossing,
+/// (core/surface_overlay.hpp): compacted, lighter soil with embedded stones and roots crossing,
 /// litter drifting in from the sides, and a worn, grassy fringe outside the edge that fades into
 /// the forest floor. Expects uv.x = signed distance to the trail's edge (metres, negative on the
 /// trail) and uv.y = arc length along the trail (metres), as world/terrain.hpp writes them.

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 
 namespace silva::render {
 

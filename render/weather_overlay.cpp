@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/rng.hpp"
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 
 namespace silva::render {
 

@@ -40,7 +40,7 @@ Vec3f terrain_normal(const TerrainField& field, double x, double y);
 /// (metres, negative on the trail, at most kTrailShoulder), uv.y the arc length along the trail
 /// of the nearest centre-line point (0 where none is within TrailPath::query_radius()); where the
 /// trail's shoulder reaches the chunk, the part's overlay is role Trail, material Trail
-/// (render/surface_overlay.hpp paints it by uv.x).
+/// (core/surface_overlay.hpp paints it by uv.x).
 Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord coord);
 
 }  // namespace silva::world

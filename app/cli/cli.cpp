@@ -9,10 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/cli/interrupt.hpp"
+#include "pipeline/console/interrupt.hpp"
 #include "app/cli/subcommands.hpp"
-#include "app/cli/version.hpp"
+#include "pipeline/console/version.hpp"
 #include "core/error.hpp"
+#include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
 

@@ -6,8 +6,9 @@
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
-#include "app/cli/reporter.hpp"
-#include "app/config/config_loader.hpp"
+#include "pipeline/console/reporter.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
 

@@ -5,12 +5,13 @@
 #include <chrono>
 #include <filesystem>
 
-#include "app/cli/interrupt.hpp"
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/console/interrupt.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/plan_captures.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace fs = std::filesystem;
 
@@ -224,4 +225,4 @@ void bench_autopilot_and_scaling(const BenchContext& ctx, std::vector<Figure>& o
   note(ctx, out.back());
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

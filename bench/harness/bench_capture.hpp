@@ -8,7 +8,7 @@
 
 #include "bench/harness/bench_context.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// The thesis's capture set: RGB + semantic + depth.
 inline const std::vector<std::string> kThesisSet = {"rgb", "semantic", "depth"};
@@ -22,4 +22,4 @@ void bench_capture(const BenchContext& ctx, std::vector<Figure>& out);
 /// whole autopilot, or with plan.autopilot_frames > 0 that subset scaled to the whole, marked extrapolated).
 void bench_autopilot_and_scaling(const BenchContext& ctx, std::vector<Figure>& out);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -4,9 +4,10 @@
 
 #include <cstdlib>
 
-#include "app/config/data_path.hpp"
+#include "pipeline/config/data_path.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 std::string shell_quote(const std::string& text) {
   std::string out = "'";
@@ -38,4 +39,4 @@ ChartRun draw_charts(const std::filesystem::path& results_json) {
                      " (Debian: apt-get install python3-matplotlib python3-numpy)"};
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Outcome of a chart run.
 struct ChartRun {
@@ -21,4 +21,4 @@ int run_shell(const std::string& command);
 /// `text` in single quotes for the shell.
 std::string shell_quote(const std::string& text);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <map>
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace fs = std::filesystem;
 
@@ -43,4 +43,4 @@ std::optional<fs::path> previous_results(const fs::path& dir, const std::string&
   return best;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

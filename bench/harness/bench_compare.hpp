@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// A figure worse than the threshold against the earlier results.
 struct Regression {
@@ -31,4 +31,4 @@ std::vector<Regression> compare_results(const nlohmann::json& previous, const nl
 std::optional<std::filesystem::path> previous_results(const std::filesystem::path& dir, const std::string& kind,
                                                       const std::string& cpu);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -2,10 +2,11 @@
 
 #include <chrono>
 
-#include "app/cli/interrupt.hpp"
+#include "pipeline/console/interrupt.hpp"
 #include "world/chunk_regions.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 void stop_if_interrupted() {
   if (interrupt_requested()) throw Interrupted("bench interrupted");
@@ -39,4 +40,4 @@ std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg
   return w;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

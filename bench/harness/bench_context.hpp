@@ -6,15 +6,16 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/reporter.hpp"
-#include "app/config/config_loader.hpp"
-#include "app/config/run_setup.hpp"
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/console/reporter.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "pipeline/config/run_setup.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 #include "bench/harness/bench_figures.hpp"
 #include "bench/harness/bench_plan.hpp"
 #include "core/stopwatch.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Fixed seed of every harness world (results are comparable run to run).
 inline constexpr int64_t kBenchSeed = 1234567890;
@@ -51,4 +52,4 @@ std::unique_ptr<WarmWorld> warm_world(const BenchContext& ctx, const Config& cfg
 /// Throws Interrupted when Ctrl-C (SIGINT/SIGTERM) asked the harness to stop.
 void stop_if_interrupted();
 
-}  // namespace silva::app
+}  // namespace silva::bench

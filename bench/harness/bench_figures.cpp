@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 std::optional<double> Figure::ratio() const {
   if (!thesis_s || *thesis_s <= 0) return std::nullopt;
@@ -85,4 +85,4 @@ nlohmann::json figure_json(const Figure& f) {
           {"breakdown", f.breakdown}};
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// What a figure's time paid for (0 = not applicable).
 struct WorkCounts {
@@ -63,4 +63,4 @@ nlohmann::json figure_json(const Figure& f);
 /// Text of a JSON scalar as used for x ("5", "true", "720x480").
 std::string x_text(const nlohmann::json& v);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -4,9 +4,10 @@
 #include <chrono>
 #include <cstdio>
 
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace {
 
@@ -91,4 +92,4 @@ void bench_generation_threads(const BenchContext& ctx, std::vector<Figure>& out)
   }
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -8,10 +8,11 @@
 #include <sstream>
 #include <thread>
 
-#include "app/cli/version.hpp"
-#include "app/config/data_path.hpp"
+#include "pipeline/console/version.hpp"
+#include "pipeline/config/data_path.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace {
 
@@ -46,7 +47,7 @@ std::string first_line(const std::string& cmd) {
 std::string source_revision() {
   const std::string git = "git -C '" + data_root().string() + "' ";
   const std::string rev = first_line(git + "rev-parse --short HEAD 2>/dev/null");
-  if (rev.empty()) return app::git_revision();
+  if (rev.empty()) return pipeline::git_revision();
   return rev + (first_line(git + "status --porcelain --untracked-files=no 2>/dev/null").empty() ? "" : "+dirty");
 }
 
@@ -96,4 +97,4 @@ nlohmann::json machine_description() {
           {"load_average_start", load_average()}};
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

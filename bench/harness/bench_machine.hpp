@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// {"cpu", "cores", "memory_gib", "os", "kernel", "compiler", "git_revision", "load_average"}.
 nlohmann::json machine_description();
@@ -15,4 +15,4 @@ std::string cpu_slug(const std::string& model);
 /// The 1-minute load average (/proc/loadavg), or -1 when unknown.
 double load_average();
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace silva::app {
+namespace silva::bench {
 
 std::vector<int> scaling_threads(int n) {
   n = std::max(1, n);
@@ -29,4 +29,4 @@ BenchPlan quick_plan(int cores) {
   return p;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

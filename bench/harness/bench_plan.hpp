@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Sweep sizes of one harness run. The thesis's x values (densities, resolutions, ...) are always
 /// all measured; these sizes decide how many frames and repetitions each point gets.
@@ -28,4 +28,4 @@ BenchPlan full_plan(int cores);
 /// point, 10 random captures, the 30-frame autopilot subset scaled to 690 (labelled extrapolated).
 BenchPlan quick_plan(int cores);
 
-}  // namespace silva::app
+}  // namespace silva::bench

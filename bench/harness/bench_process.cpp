@@ -15,7 +15,7 @@
 
 extern char** environ;
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace fs = std::filesystem;
 
@@ -153,4 +153,4 @@ std::string generation_process_markdown(const nlohmann::json& g) {
   return md;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -9,7 +9,7 @@
 
 #include "bench/harness/bench_plan.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Runs of the whole process the harness takes the median of.
 inline constexpr int kProcessRuns = 3;
@@ -36,4 +36,4 @@ nlohmann::json generation_and_process(const nlohmann::json& results, const nlohm
 /// The markdown section showing both generation figures side by side and what the difference is.
 std::string generation_process_markdown(const nlohmann::json& generation_process);
 
-}  // namespace silva::app
+}  // namespace silva::bench

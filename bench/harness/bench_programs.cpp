@@ -7,7 +7,7 @@
 #include "bench/harness/bench_charts.hpp"
 #include "core/stopwatch.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace fs = std::filesystem;
 
@@ -129,4 +129,4 @@ nlohmann::json run_bench_program(const fs::path& program, const std::string& fil
           {"benchmarks", annotate(doc["benchmarks"])}};
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

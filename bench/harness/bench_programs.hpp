@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace silva::app {
+namespace silva::bench {
 
 /// What became of one benchmark of a program.
 struct ProgramOutcome {
@@ -33,4 +33,4 @@ nlohmann::json run_bench_program(const std::filesystem::path& program, const std
 /// Where bench program `name` is built: <folder of the running silva binary>/bench/<name>.
 std::filesystem::path bench_program_path(const std::string& name);
 
-}  // namespace silva::app
+}  // namespace silva::bench

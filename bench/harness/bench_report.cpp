@@ -7,7 +7,7 @@
 #include "bench/harness/bench_programs.hpp"
 #include "bench/harness/bench_process.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace {
 
@@ -157,4 +157,4 @@ std::string bench_markdown(const nlohmann::json& results, const std::string& pre
   return md.str();
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -8,7 +8,7 @@
 
 #include "bench/harness/bench_compare.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Name part of the chart drawn for `table` by scripts/bench_charts.py ("5.1" -> "generation-density";
 /// "threads" for the scaling tables), or "" when the table has no chart.
@@ -21,4 +21,4 @@ std::string bench_markdown(const nlohmann::json& results, const std::string& pre
                            const std::vector<Regression>& regressions, const std::filesystem::path& dir,
                            const std::string& stem);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -2,13 +2,14 @@
 
 #include <ctime>
 
-#include "app/cli/interrupt.hpp"
+#include "pipeline/console/interrupt.hpp"
 #include "bench/harness/bench_capture.hpp"
 #include "bench/harness/bench_generation.hpp"
 #include "bench/harness/bench_machine.hpp"
 #include "core/stopwatch.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 std::string utc_now() {
   const std::time_t now = std::time(nullptr);
@@ -51,4 +52,4 @@ nlohmann::json run_bench_suite(const BenchContext& ctx, double setup_s) {
   return doc;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

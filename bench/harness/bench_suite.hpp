@@ -4,7 +4,7 @@
 
 #include "bench/harness/bench_context.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Runs generation, capture, autopilot and thread scaling for `ctx` and returns the results document:
 /// {"harness": "silva-bench", "kind", "created_utc", "cpu_slug", "machine", "thesis_machine",
@@ -16,4 +16,4 @@ nlohmann::json run_bench_suite(const BenchContext& ctx, double setup_s);
 /// The current UTC time as "YYYY-MM-DDTHH:MM:SSZ".
 std::string utc_now();
 
-}  // namespace silva::app
+}  // namespace silva::bench

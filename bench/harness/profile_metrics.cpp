@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-namespace silva::app {
+namespace silva::bench {
 
 double nearest_rank(const std::vector<double>& sorted, double q) {
   if (sorted.empty()) return 0;
@@ -120,4 +120,4 @@ double crown_radius(const assets::Asset& asset) {
   return r;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -9,7 +9,7 @@
 
 #include "assets/library.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Distribution of nearest-neighbour distances (metres, nearest-rank percentiles).
 struct NearestStats {
@@ -52,4 +52,4 @@ class CoverGrid {
 /// a vertex of its canopy parts (tree_canopy), or of any part when it has none; lods[0], unscaled.
 double crown_radius(const assets::Asset& asset);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -7,7 +7,7 @@
 
 #include "io/png_writer.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace {
 
@@ -150,4 +150,4 @@ std::vector<uint8_t> heatmap_png(const WorldProfile& world, double max_per_ha, i
   return io::encode_png_rgb8(rgb, width, h);
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

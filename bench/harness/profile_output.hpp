@@ -8,7 +8,7 @@
 #include "bench/harness/profile_world.hpp"
 #include "core/ontology.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// One profiled world of the sweep and the settings that made it.
 struct ProfileSample {
@@ -37,4 +37,4 @@ std::vector<uint8_t> heatmap_png(const WorldProfile& world, double max_per_ha, i
 /// Colour of t in [0, 1] on the viridis-like scale (R, G, B).
 std::array<uint8_t, 3> heat_colour(double t);
 
-}  // namespace silva::app
+}  // namespace silva::bench

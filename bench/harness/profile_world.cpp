@@ -5,11 +5,12 @@
 
 #include <algorithm>
 
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 #include "core/stopwatch.hpp"
 #include "world/placement.hpp"
+#include "bench/harness/pipeline_names.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 namespace {
 
@@ -121,4 +122,4 @@ WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<Chu
   return p;
 }
 
-}  // namespace silva::app
+}  // namespace silva::bench

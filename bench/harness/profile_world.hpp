@@ -9,7 +9,7 @@
 #include "world/world_context.hpp"
 #include "world/world_summary.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 
 /// Per class (role) figures of one world.
 struct ClassProfile {
@@ -50,4 +50,4 @@ inline constexpr double kCoverCell = 0.25;
 /// Builds `coords` of `ctx` on `threads` threads and profiles the result.
 WorldProfile profile_world(const world::WorldContext& ctx, const std::vector<ChunkCoord>& coords, int threads);
 
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -1,4 +1,4 @@
-#include "app/commands/asset_sheet.hpp"
+#include "app/commands/assets/asset_sheet.hpp"
 
 #include <gtest/gtest.h>
 

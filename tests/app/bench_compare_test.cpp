@@ -6,7 +6,7 @@
 
 #include "silva_process.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 namespace {
 
 /// A results document with one figure per (table, x, seconds).
@@ -52,4 +52,4 @@ TEST(BenchCompare, PreviousResultsIsTheNewestOfTheSameKindAndCpu) {
 }
 
 }  // namespace
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -8,7 +8,7 @@
 #include "bench/harness/bench_process.hpp"
 #include "bench/harness/bench_report.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 namespace {
 
 /// A results document with just what bench_markdown reads, the figure of Table 5.1 at 5 % and `peers`.
@@ -128,4 +128,4 @@ TEST(BenchProcess, TimesSilvaWorldOfATinyWorldAsAChildProcess) {
 }
 
 }  // namespace
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -8,7 +8,7 @@
 #include "bench/harness/bench_report.hpp"
 #include "silva_process.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 namespace {
 
 /// A tiny sweep (128 m world, 64x48 frames, 1-2 frames a point) that still measures every table.
@@ -149,4 +149,4 @@ TEST(BenchPlan, ScalingThreadsEndAtTheCoreCount) {
 }
 
 }  // namespace
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -9,8 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/config/config_loader.hpp"
-#include "config_equal.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "tests/common/config_equal.hpp"
+#include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
 namespace {

@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "app/config/config_loader.hpp"
-#include "config_equal.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "tests/common/config_equal.hpp"
 #include "silva_process.hpp"
+#include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
 namespace {

@@ -126,10 +126,10 @@ TEST(GenerateLighting, WeatherLeavesLabelsAndDepthByteIdentical) {
     const ProcessResult r = run_silva(args, dir);
     EXPECT_EQ(r.code, 0) << r.err;
     std::map<std::string, std::string> files = folder_files(dir / weather);
-    std::map<std::string, std::string> kept;
+    std::map<std::string, std::string> kept;  // the manifest and the card name the weather
     for (auto& [name, bytes] : files)
       if (name.find("/rgb/") == std::string::npos && !name.ends_with("manifest.json") &&
-          !name.ends_with(".silva-run.json"))
+          !name.ends_with(".silva-run.json") && !name.ends_with("CARD.md") && !name.ends_with("card.json"))
         kept[name] = std::move(bytes);
     return std::pair{kept, files};
   };

@@ -1,4 +1,4 @@
-// Same seed and config with --threads 1 and --threads 2 write byte-identical files.
+// Same seed and config with --threads 1 and --threads 2 write byte-identical files (run.json aside).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -25,6 +25,8 @@ TEST(GenerateThreads, OneAndTwoThreadsWriteIdenticalFiles) {
     EXPECT_EQ(record.at("threads"), threads);
   }
   EXPECT_GT(files[0].size(), 40u);
+  // The dataset card is compared too: it quotes no timings.
+  for (const char* card : {"CARD.md", "card.json", "card_classes.png", "card_poses.png"}) EXPECT_EQ(files[0].count(card), 1u) << card;
   EXPECT_EQ(file_differences(files[0], files[1]), "");
 }
 

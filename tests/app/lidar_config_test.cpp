@@ -1,13 +1,14 @@
 // LiDAR presets as data: configs/lidar.toml, user tables, and the errors of bad ones.
-#include "app/config/lidar_config.hpp"
+#include "pipeline/config/lidar_config.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "app/config/data_path.hpp"
+#include "pipeline/config/data_path.hpp"
 #include "core/error.hpp"
 #include "silva_process.hpp"
+#include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
 namespace {

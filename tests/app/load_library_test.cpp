@@ -10,7 +10,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "app/commands/asset_files.hpp"
+#include "app/commands/assets/asset_files.hpp"
 #include "core/error.hpp"
 #include "tests/common/mesh_checks.hpp"
 #include "textured_library.hpp"

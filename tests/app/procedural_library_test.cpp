@@ -5,7 +5,7 @@
 #include <fstream>
 #include <thread>
 
-#include "app/commands/asset_files.hpp"
+#include "app/commands/assets/asset_files.hpp"
 #include "assets/load_library.hpp"
 #include "core/error.hpp"
 

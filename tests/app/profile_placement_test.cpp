@@ -2,15 +2,16 @@
 
 #include <cmath>
 
-#include "app/config/config_loader.hpp"
-#include "app/config/run_setup.hpp"
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "pipeline/config/run_setup.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 #include "bench/harness/profile_output.hpp"
+#include "bench/harness/pipeline_names.hpp"
 #include "bench/harness/profile_world.hpp"
 #include "silva_process.hpp"
 #include "world/chunk_regions.hpp"
 
-namespace silva::app {
+namespace silva::bench {
 namespace {
 
 /// A small world config (128 m region) at `density`.
@@ -184,4 +185,4 @@ TEST(ProfileCli, WritesJsonCsvAndOneHeatmapPerDensity) {
 }
 
 }  // namespace
-}  // namespace silva::app
+}  // namespace silva::bench

@@ -87,8 +87,6 @@ std::map<std::string, std::string> folder_files(const fs::path& dir, bool with_r
     if (!entry.is_regular_file()) continue;
     const std::string name = entry.path().filename().string();
     if (!with_run_records && name.rfind("run", 0) == 0 && entry.path().extension() == ".json") continue;
-    // The dataset card describes the run (conditions, timings); tests/python/loader_test.py checks it.
-    if (name == "CARD.md" || name == "card.json" || name.rfind("card_", 0) == 0) continue;
     files[fs::relative(entry.path(), dir).string()] = read_file(entry.path());
   }
   return files;

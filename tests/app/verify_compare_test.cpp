@@ -1,5 +1,5 @@
 // Known answers for `silva verify`'s per-pixel comparison and its error histogram.
-#include "app/commands/verify_compare.hpp"
+#include "app/commands/verify/verify_compare.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // `silva view` without a browser: the page's config edits, the views, and captures numbered in the pose file.
 #include <gtest/gtest.h>
 
-#include "app/commands/view_explorer.hpp"
+#include "app/commands/view/view_explorer.hpp"
 #include "core/error.hpp"
 #include "io/pose_file.hpp"
 #include "silva_process.hpp"

@@ -9,9 +9,9 @@
 
 #include <toml++/toml.h>
 
-#include "app/config/config_checks.hpp"
-#include "app/config/config_loader.hpp"
-#include "app/config/lighting_config.hpp"
+#include "pipeline/config/config_checks.hpp"
+#include "pipeline/config/config_loader.hpp"
+#include "pipeline/config/lighting_config.hpp"
 #include "assets/import_mesh.hpp"
 #include "assets/manifest.hpp"
 #include "core/error.hpp"
@@ -43,14 +43,14 @@ fs::path scratch_file(const std::string& name, std::string_view input) {
 }
 
 void config_file(std::string_view input) {
-  const app::LoadedConfig loaded = app::parse_config_text(input, "fuzz.toml");
-  app::check_config(loaded);
+  const pipeline::LoadedConfig loaded = pipeline::parse_config_text(input, "fuzz.toml");
+  pipeline::check_config(loaded);
 }
 
 void set_override(std::string_view input) {
-  app::LoadedConfig loaded;
-  app::apply_override(loaded, input);
-  app::check_config(loaded);
+  pipeline::LoadedConfig loaded;
+  pipeline::apply_override(loaded, input);
+  pipeline::check_config(loaded);
 }
 
 void pose_json(std::string_view input) { io::parse_pose_json(std::string(input), "fuzz.json"); }
@@ -66,8 +66,8 @@ void lighting(std::string_view input) {
   } catch (const toml::parse_error& e) {
     throw InputError(std::string("lighting.toml: invalid TOML: ") + std::string(e.description()));
   }
-  app::parse_lighting_presets(table, "lighting.toml");
-  app::parse_lighting_weathers(table, "lighting.toml");
+  pipeline::parse_lighting_presets(table, "lighting.toml");
+  pipeline::parse_lighting_weathers(table, "lighting.toml");
 }
 
 void library(std::string_view input) { assets::parse_manifest(std::string(input), "library.json"); }

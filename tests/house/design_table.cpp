@@ -81,12 +81,15 @@ std::string format_rules(const std::vector<FolderRule>& rules) {
   return out.str();
 }
 
-std::string included_source_folder(std::string_view line) {
-  static const std::regex kInclude(R"(^\s*#\s*include\s*"([A-Za-z0-9_]+)/)");
-  std::match_results<std::string_view::const_iterator> m;
-  if (!std::regex_search(line.begin(), line.end(), m, kInclude)) return {};
-  const std::string folder = m[1].str();
-  return is_source_folder(folder) ? folder : std::string();
+std::vector<FolderRule> design_rules(const std::filesystem::path& root) {
+  return parse_design_table(read_text(root / "docs/DESIGN.md"));
+}
+
+FolderRule rule_for(const std::vector<FolderRule>& rules, std::string_view folder) {
+  for (const FolderRule& r : rules) {
+    if (r.folder == folder) return r;
+  }
+  return FolderRule{std::string(folder), {}, {}};
 }
 
 }  // namespace silva::house

@@ -1,6 +1,7 @@
 /// @file docs/DESIGN.md's folder table ("| `folder/` | what lives there | may include |") read as rules.
 #pragma once
 
+#include <filesystem>
 #include <set>
 #include <string>
 #include <string_view>
@@ -26,7 +27,10 @@ std::string format_rules(const std::vector<FolderRule>& rules);
 /// The folder and its allowed folders, comma-separated ("render, core").
 std::string allowed_list(const FolderRule& rule);
 
-/// The top folder X of a line `#include "X/..."` when X is one of ours; empty otherwise.
-std::string included_source_folder(std::string_view line);
+/// The rules of root/docs/DESIGN.md's folder table.
+std::vector<FolderRule> design_rules(const std::filesystem::path& root);
+
+/// The row of `folder`, or a row allowing nothing but itself when the table has none.
+FolderRule rule_for(const std::vector<FolderRule>& rules, std::string_view folder);
 
 }  // namespace silva::house

@@ -1,4 +1,4 @@
-// Known answers for reading docs/DESIGN.md's folder table and #include lines.
+// Known answers for reading docs/DESIGN.md's folder table.
 #include <gtest/gtest.h>
 
 #include "design_table.hpp"
@@ -27,12 +27,10 @@ TEST(DesignTable, RowsOfSourceFoldersAreRead) {
   EXPECT_NE(format_rules(rules).find("render/: \"core, Eigen, TBB\" -> render, core"), std::string::npos);
 }
 
-TEST(DesignTable, IncludesOfOurFoldersAreRecognised) {
-  EXPECT_EQ(included_source_folder("#include \"render/gbuffer.hpp\""), "render");
-  EXPECT_EQ(included_source_folder("  #  include \"ecs/world.hpp\"  // why"), "ecs");
-  EXPECT_EQ(included_source_folder("#include \"hwy/highway.h\""), "");
-  EXPECT_EQ(included_source_folder("#include <core/rng.hpp>"), "");
-  EXPECT_EQ(included_source_folder("#include \"local.hpp\""), "");
+TEST(DesignTable, AFolderWithoutARowAllowsOnlyItself) {
+  const std::vector<FolderRule> rules = parse_design_table(kTable);
+  EXPECT_EQ(allowed_list(rule_for(rules, "systems")), "systems, core, ecs, io, render");
+  EXPECT_EQ(allowed_list(rule_for(rules, "web")), "web");
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 namespace silva::house {
 
 /// The folders of our own sources (tests/, configs/, docs/ are not source folders).
-inline constexpr std::string_view kSourceFolders[] = {"core", "ecs",     "components", "world", "render", "raycast",
-                                                      "assets", "io", "systems", "web",       "app",   "bench"};
+inline constexpr std::string_view kSourceFolders[] = {"core", "ecs", "components", "world", "render", "raycast", "assets",
+                                                      "io", "systems", "web", "pipeline", "bench", "app"};
 
 /// True when `name` is one of kSourceFolders.
 bool is_source_folder(std::string_view name);

@@ -10,7 +10,7 @@
 #include "highway_targets.hpp"
 #include "render/brdf.hpp"
 #include "render/materials.hpp"
-#include "render/shading_noise.hpp"
+#include "core/value_noise.hpp"
 #include "render/weather_look.hpp"
 
 namespace silva::render {

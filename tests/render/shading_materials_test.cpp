@@ -5,8 +5,8 @@
 
 #include "highway_targets.hpp"
 #include "render/materials.hpp"
-#include "render/shading_noise.hpp"
-#include "render/surface_overlay.hpp"
+#include "core/value_noise.hpp"
+#include "core/surface_overlay.hpp"
 
 namespace silva::render {
 namespace {

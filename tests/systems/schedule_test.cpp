@@ -1,5 +1,5 @@
 // The one schedule: its systems, their access declarations, and what a frame leaves behind.
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 #include "world/chunk_content.hpp"
 #include "world/world_generator.hpp"
 
-namespace silva::app {
+namespace silva::pipeline {
 namespace {
 
 /// A small world context whose trail the tests walk.
@@ -96,4 +96,4 @@ TEST(Schedule, CamerasWalkingTheTrailStreamTheirChunksWithinTheCacheBound) {
 }
 
 }  // namespace
-}  // namespace silva::app
+}  // namespace silva::pipeline

@@ -8,7 +8,7 @@
 
 #include "core/camera.hpp"
 #include "render/renderer.hpp"
-#include "render/surface_overlay.hpp"
+#include "core/surface_overlay.hpp"
 #include "systems/prepare_scene.hpp"
 #include "tests/common/test_library.hpp"
 #include "world/world_generator.hpp"
@@ -77,7 +77,7 @@ TEST(TrailEdge, LabelEdgeIsTheHalfBlendLine) {
     const render::GBuffer g = trail_view(ctx, s, 2.5);
     for (size_t i = 0; i < g.size(); ++i) {
       ASSERT_NE(g.depth[i], 0.0f);
-      const float w = render::overlay_weight(render::overlay_edge(g.uv[i].x(), g.position[i]));
+      const float w = overlay_weight(overlay_edge(g.uv[i].x(), g.position[i]));
       // The class is the trail exactly where the look is at least half trail ...
       EXPECT_EQ(g.role[i] == Role::Trail, w >= 0.5f) << i;
       // ... and the trail material shades every pixel the blend (or the worn margin) touches.

@@ -1,4 +1,4 @@
-#include "app/schedule/world_schedule.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 namespace silva::world {
 
-using app::build_default_world;
-using app::build_world;
+using pipeline::build_default_world;
+using pipeline::build_world;
 
 TEST(WorldBuild, SameSeedSameHashForOneAndTwoThreads) {
   const WorldContext ctx = make_world_context(test::small_world_config(77, 10), test::small_library());

@@ -1,0 +1,64 @@
+// `silva export DIR --format F`: convert a finished dataset into the formats other tools load.
+#include <memory>
+
+#include "app/cli/command_options.hpp"
+#include "app/cli/subcommands.hpp"
+#include "app/commands/export/export_command.hpp"
+#include "io/export_formats.hpp"
+
+namespace silva::app {
+
+namespace {
+
+struct ExportArgs {
+  std::string dir;
+  std::vector<std::string> formats;
+  std::string out;
+  bool overwrite = false;
+  int threads = 0;
+  OutputFlags output;
+};
+
+int export_command(const ExportArgs& args) {
+  const Reporter reporter(args.output);
+  ExportRequest request;
+  request.run_dir = args.dir;
+  for (const std::string& name : args.formats) {
+    if (name == "all") {
+      request.all = true;
+      continue;
+    }
+    request.formats.push_back(io::parse_export_format(name, "--format"));
+  }
+  request.out_dir = args.out.empty() ? request.run_dir / "export" : std::filesystem::path(args.out);
+  request.overwrite = args.overwrite;
+  const ThreadLimit limit(args.threads);
+  return run_export(request, reporter);
+}
+
+}  // namespace
+
+Handler add_export_command(CLI::App& root) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* cmd = root.add_subcommand(
+      "export",
+      "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap, "
+      "nerfstudio or semantickitti (LiDAR), each into <out>/<format>/; source files are hard-linked.");
+  cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
+  cmd->add_option("--format", args->formats,
+                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, or all (every "
+                  "camera format, and semantickitti when the dataset has lidar; several: comma-separated)")
+      ->required()
+      ->delimiter(',')
+      ->type_name("F");
+  cmd->add_option("--out", args->out, "folder that receives one sub-folder per format (default DIR/export)")
+      ->type_name("DIR");
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing <out>/<format>/");
+  add_threads_option(*cmd, args->threads);
+  add_output_flags(*cmd, args->output);
+  cmd->footer("Examples:\n  silva export out/1234567890 --format coco-panoptic\n"
+              "  silva export out/1234567890 --format all --out exports --overwrite");
+  return [args] { return export_command(*args); };
+}
+
+}  // namespace silva::app

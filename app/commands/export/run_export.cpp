@@ -1,0 +1,79 @@
+// `silva export` after the CLI checks: each format is written into a hidden partial folder and moved
+// into place only when complete, so an interrupted or failed export never replaces a good one.
+#include <algorithm>
+#include <cstdio>
+#include <system_error>
+
+#include "app/commands/export/export_command.hpp"
+#include "core/error.hpp"
+#include "core/stopwatch.hpp"
+
+namespace silva::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// True when `dir` exists and is not an empty folder.
+bool holds_something(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return false;
+  return !fs::is_directory(dir, ec) || !fs::is_empty(dir, ec);
+}
+
+void remove_folder(const fs::path& dir) {
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  if (ec) throw IoError("cannot remove " + dir.string() + ": " + ec.message());
+}
+
+}  // namespace
+
+nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
+                              const fs::path& out_dir, bool overwrite) {
+  for (io::ExportFormat format : formats) {
+    const fs::path target = out_dir / io::export_format_name(format);
+    if (!overwrite && holds_something(target))
+      throw InputError(target.string() + ": already exists; pass --overwrite to replace it");
+  }
+  nlohmann::json written = nlohmann::json::array();
+  for (io::ExportFormat format : formats) {
+    const Stopwatch clock;
+    const std::string& name = io::export_format_name(format);
+    const fs::path target = out_dir / name, partial = out_dir / ("." + name + ".partial");
+    remove_folder(partial);
+    io::create_folder(partial);
+    io::export_dataset(dataset, format, partial);
+    remove_folder(target);
+    std::error_code ec;
+    fs::rename(partial, target, ec);
+    if (ec) throw IoError("cannot move " + partial.string() + " to " + target.string() + ": " + ec.message());
+    written.push_back({{"format", name}, {"dir", target.string()}, {"seconds", clock.seconds()}});
+  }
+  return written;
+}
+
+int run_export(const ExportRequest& request, const Reporter& reporter) {
+  const io::Dataset dataset = io::open_dataset(request.run_dir);
+  std::vector<io::ExportFormat> formats = request.formats;
+  if (request.all)
+    for (size_t i = 0; i < io::export_format_names().size(); ++i) {
+      const auto format = io::ExportFormat(i);
+      if (format == io::ExportFormat::SemanticKitti && !dataset.has("lidar")) continue;
+      if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
+    }
+  const Stopwatch clock;
+  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite);
+  std::string line;
+  for (const auto& w : written) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " (%.2f s)", w["seconds"].get<double>());
+    line += (line.empty() ? "" : ", ") + w["dir"].get<std::string>() + buf;
+  }
+  reporter.result({{"ok", true}, {"run_dir", request.run_dir.string()}, {"frames", dataset.frames.size()},
+                   {"exports", written}, {"wall_s", clock.seconds()}},
+                  "exported " + std::to_string(dataset.frames.size()) + " frames to " + line);
+  return 0;
+}
+
+}  // namespace silva::app
