@@ -39,6 +39,8 @@ inline double corner(double x, double y, int gi) {
 
 }  // namespace
 
+SimplexTables simplex2_tables() { return {kPerm, kGrad}; }
+
 double simplex2(double xin, double yin) {
   const double F2 = 0.5 * (std::sqrt(3.0) - 1.0);
   const double G2 = (3.0 - std::sqrt(3.0)) / 6.0;

@@ -3,10 +3,21 @@
 /// Only exact or correctly rounded operations are used (no FMA), so values are bit-identical
 /// on every target and thread count.
 
+#include <cstdint>
+
 namespace silva {
 
 /// 2D simplex noise (Gustavson's formulation with Perlin's permutation), value in [-1, 1].
 double simplex2(double x, double y);
+
+/// The tables simplex2 reads, for versions on SIMD lanes that must return its bits.
+struct SimplexTables {
+  const uint8_t* permutation;   ///< Perlin's permutation of 0..255 (256 entries).
+  const double (*gradients)[2]; ///< The 12 gradient directions (x, y).
+};
+
+/// simplex2's tables.
+SimplexTables simplex2_tables();
 
 /// Parameters of a fractal Brownian motion sum of simplex octaves.
 struct FbmParams {

@@ -26,6 +26,14 @@ constexpr uint32_t kMinTufts = 3;
 constexpr uint32_t kTuftRange = 4;
 constexpr uint32_t kMaxDebris = 3;
 
+/// Sets the terrain height of every candidate of `list` (their world x, y in double in `x`, `y`).
+void fill_heights(const TerrainField& terrain, const std::vector<double>& x, const std::vector<double>& y,
+                  std::vector<Candidate>& list) {
+  std::vector<float> z(list.size());
+  terrain_heights(terrain, x.data(), y.data(), z.data(), list.size());
+  for (size_t k = 0; k < list.size(); ++k) list[k].position.z() = z[k];
+}
+
 }  // namespace
 
 bool outranks(const Candidate& a, const Candidate& b) {
@@ -50,6 +58,9 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
   const double corridor = ctx.trail.corridor_half_width();
 
   ChunkCandidates out;
+  // Each candidate's (x, y) in double, beside out.solids and out.ground: heights are filled in at the end,
+  // all of a list at once.
+  std::vector<double> solid_x, solid_y, ground_x, ground_y;
   auto propose = [&](AssetKind kind, const PointDraws& d, uint32_t point, uint32_t sub, double cx, double cy) {
     Rng pos = d.stream(Purpose::PlacementPosition, sub);
     const double r = radius * std::sqrt(pos.uniform_double()), th = kTwoPi * pos.uniform_double();
@@ -67,7 +78,7 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
       return;
     }
     c.yaw = float(kTwoPi * d.stream(Purpose::PlacementYaw, sub).uniform_double());
-    c.position = Vec3f(float(x), float(y), terrain_height(ctx.terrain, x, y));
+    c.position = Vec3f(float(x), float(y), 0.0f);
     c.point = point;
     c.sub = uint16_t(sub);
     c.rank = kind_rank(kind);
@@ -75,6 +86,8 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
     c.priority = rng_bits(d.seed, d.key, uint64_t(Purpose::ResolvePriority), sub);
     const bool solid = is_solid(kind) && lib.assets[c.asset].proxy.shape != assets::CollisionProxy::Shape::None;
     (solid ? out.solids : out.ground).push_back(c);
+    (solid ? solid_x : ground_x).push_back(x);
+    (solid ? solid_y : ground_y).push_back(y);
   };
 
   for (int gy = 0; gy < n; ++gy) {
@@ -97,6 +110,8 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
       for (uint32_t sub = tufts; sub < tufts + debris; ++sub) propose(AssetKind::GroundCover, d, point, sub, cx, cy);
     }
   }
+  fill_heights(ctx.terrain, solid_x, solid_y, out.solids);
+  fill_heights(ctx.terrain, ground_x, ground_y, out.ground);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/rng.hpp"
+#include "world/noise_lanes.hpp"
 
 namespace silva::world {
 
@@ -13,21 +14,29 @@ namespace {
 /// Natural (unshaped) height of the function at world (x, y).
 double natural_height(const TerrainField& f, double x, double y) { return f.max_elevation * fbm2(f.noise, x, y); }
 
-/// Height of the function at world (x, y), with the nearest trail point `p` already found.
-double height_near(const TerrainField& f, const TrailPoint& p, double x, double y) {
-  const double natural = natural_height(f, x, y);
+/// Height of the function where the natural height is `natural` and the nearest trail point `p`.
+double shaped(const TerrainField& f, const TrailPoint& p, double natural) {
   return f.trail ? shaped_height(*f.trail, p, natural) : natural;
+}
+
+/// Nearest trail point of world (x, y) (none without a trail).
+TrailPoint trail_point(const TerrainField& f, double x, double y) {
+  return f.trail ? nearest_trail_point(*f.trail, x, y) : TrailPoint{};
 }
 
 /// Height of the function at world (x, y).
 double height_at(const TerrainField& f, double x, double y) {
-  return height_near(f, f.trail ? nearest_trail_point(*f.trail, x, y) : TrailPoint{}, x, y);
+  return shaped(f, trail_point(f, x, y), natural_height(f, x, y));
 }
 
-/// Height of the function at global vertex-grid index (gx, gy).
-double grid_height(const TerrainField& f, int64_t gx, int64_t gy) {
-  return height_at(f, double(gx) * f.vertex_spacing, double(gy) * f.vertex_spacing);
+/// heights[k] = height_at(f, x[k], y[k]) for k < n, the natural heights n at a time on SIMD lanes.
+void heights_at(const TerrainField& f, const double* x, const double* y, double* heights, size_t n) {
+  fbm2_lanes(f.noise, x, y, heights, n);
+  for (size_t k = 0; k < n; ++k) heights[k] = shaped(f, trail_point(f, x[k], y[k]), f.max_elevation * heights[k]);
 }
+
+/// World coordinate of global vertex-grid index g.
+double grid_coordinate(const TerrainField& f, int64_t g) { return double(g) * f.vertex_spacing; }
 
 /// Terrain uv of a point whose nearest trail point is `p`: (distance to the trail edge, at most
 /// the shoulder; arc length along the trail where a centre-line point is near, else 0).
@@ -66,28 +75,38 @@ TerrainField make_terrain_field(const Config& cfg) {
 
 float terrain_height(const TerrainField& field, double x, double y) { return float(height_at(field, x, y)); }
 
+void terrain_heights(const TerrainField& field, const double* x, const double* y, float* heights, size_t n) {
+  std::vector<double> h(n);
+  heights_at(field, x, y, h.data(), n);
+  for (size_t k = 0; k < n; ++k) heights[k] = float(h[k]);
+}
+
 float surface_height(const TerrainField& field, double x, double y) {
   const double gxf = std::floor(x / field.vertex_spacing);
   const double gyf = std::floor(y / field.vertex_spacing);
   const double fx = x / field.vertex_spacing - gxf;
   const double fy = y / field.vertex_spacing - gyf;
   const int64_t gx = int64_t(gxf), gy = int64_t(gyf);
-  // Heights as stored in the mesh (float), so the surface matches the triangles exactly.
-  const double h00 = float(grid_height(field, gx, gy));
-  const double h11 = float(grid_height(field, gx + 1, gy + 1));
-  // Each cell is split along its (0,0)-(1,1) diagonal, as in build_terrain_mesh.
-  if (fx >= fy) {
-    const double h10 = float(grid_height(field, gx + 1, gy));
-    return float(h00 + fx * (h10 - h00) + fy * (h11 - h10));
-  }
-  const double h01 = float(grid_height(field, gx, gy + 1));
-  return float(h00 + fy * (h01 - h00) + fx * (h11 - h01));
+  // Heights as stored in the mesh (float), so the surface matches the triangles exactly. Each cell is
+  // split along its (0,0)-(1,1) diagonal, as in build_terrain_mesh: corners (0,0), (1,1) and the third.
+  const bool lower = fx >= fy;
+  const double cx[3] = {grid_coordinate(field, gx), grid_coordinate(field, gx + 1),
+                         grid_coordinate(field, lower ? gx + 1 : gx)};
+  const double cy[3] = {grid_coordinate(field, gy), grid_coordinate(field, gy + 1),
+                         grid_coordinate(field, lower ? gy : gy + 1)};
+  double h[3];
+  heights_at(field, cx, cy, h, 3);
+  const double h00 = float(h[0]), h11 = float(h[1]), third = float(h[2]);
+  if (lower) return float(h00 + fx * (third - h00) + fy * (h11 - third));
+  return float(h00 + fy * (third - h00) + fx * (h11 - third));
 }
 
 Vec3f terrain_normal(const TerrainField& field, double x, double y) {
   const double d = field.vertex_spacing;
-  return normal_from_differences(height_at(field, x - d, y), height_at(field, x + d, y), height_at(field, x, y - d),
-                                 height_at(field, x, y + d), d);
+  const double xs[4] = {x - d, x + d, x, x}, ys[4] = {y, y, y - d, y + d};
+  double h[4];
+  heights_at(field, xs, ys, h, 4);
+  return normal_from_differences(h[0], h[1], h[2], h[3], d);
 }
 
 Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord coord) {
@@ -96,15 +115,22 @@ Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord
   const int64_t gx0 = int64_t(coord.i) * n - 1, gy0 = int64_t(coord.j) * n - 1;
   std::vector<double> h(size_t(side) * side);
   std::vector<Vec2f> uv(size_t(side) * side);
+  std::vector<double> row_x(size_t(side), 0.0), row_y(size_t(side), 0.0);
   bool trail_near = false;
-  for (int y = 0; y < side; ++y)
+  for (int y = 0; y < side; ++y) {
     for (int x = 0; x < side; ++x) {
-      const double wx = double(gx0 + x) * field.vertex_spacing, wy = double(gy0 + y) * field.vertex_spacing;
-      const TrailPoint p = field.trail ? nearest_trail_point(*field.trail, wx, wy) : TrailPoint{};
-      h[size_t(y) * side + x] = height_near(field, p, wx, wy);
+      row_x[size_t(x)] = grid_coordinate(field, gx0 + x);
+      row_y[size_t(x)] = grid_coordinate(field, gy0 + y);
+    }
+    double* row = h.data() + size_t(y) * side;
+    fbm2_lanes(field.noise, row_x.data(), row_y.data(), row, size_t(side));
+    for (int x = 0; x < side; ++x) {
+      const TrailPoint p = trail_point(field, row_x[size_t(x)], row_y[size_t(x)]);
+      row[x] = shaped(field, p, field.max_elevation * row[x]);
       uv[size_t(y) * side + x] = trail_uv(field, p);
       trail_near = trail_near || (field.trail && p.distance < field.trail->reach());
     }
+  }
   auto at = [&](int x, int y) { return h[size_t(y + 1) * side + (x + 1)]; };
 
   Mesh m;
@@ -114,8 +140,8 @@ Mesh build_terrain_mesh(const TerrainField& field, double chunk_size, ChunkCoord
   m.uvs.reserve(verts);
   for (int y = 0; y <= n; ++y) {
     for (int x = 0; x <= n; ++x) {
-      const double wx = double(gx0 + 1 + x) * field.vertex_spacing;
-      const double wy = double(gy0 + 1 + y) * field.vertex_spacing;
+      const double wx = grid_coordinate(field, gx0 + 1 + x);
+      const double wy = grid_coordinate(field, gy0 + 1 + y);
       m.positions.emplace_back(float(wx), float(wy), float(at(x, y)));
       m.normals.push_back(normal_from_differences(at(x - 1, y), at(x + 1, y), at(x, y - 1), at(x, y + 1),
                                                   field.vertex_spacing));

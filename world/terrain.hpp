@@ -28,6 +28,9 @@ TerrainField make_terrain_field(const Config& cfg);
 /// Height of the terrain function at world (x, y), metres (the trail's bed included).
 float terrain_height(const TerrainField& field, double x, double y);
 
+/// heights[k] = terrain_height(field, x[k], y[k]) for k < n (the noise n points at a time on SIMD lanes).
+void terrain_heights(const TerrainField& field, const double* x, const double* y, float* heights, size_t n);
+
 /// Height of the triangulated terrain mesh surface at (x, y): the function sampled at the
 /// vertex grid and interpolated over the same triangle the mesh uses (for draping).
 float surface_height(const TerrainField& field, double x, double y);
