@@ -3,18 +3,21 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 namespace silva::world {
 
 namespace {
 
-/// Feeds a vector's bytes to the hash state.
+/// Feeds a vector's size and its elements' coefficients to the hash state, the whole array at once (the
+/// elements are packed coefficients, so this is the bytes of feeding them one by one).
 template <class T>
 void feed(XXH3_state_t* st, const std::vector<T>& v) {
+  static_assert(sizeof(T) == sizeof(typename T::Scalar) * size_t(T::SizeAtCompileTime), "packed coefficients");
   const uint64_t n = v.size();
   XXH3_64bits_update(st, &n, sizeof n);
-  for (const T& x : v) XXH3_64bits_update(st, x.data(), sizeof(typename T::Scalar) * size_t(x.size()));
+  XXH3_64bits_update(st, v.data(), sizeof(T) * v.size());
 }
 
 /// Feeds a mesh (positions, normals, uvs, indices, part roles/materials).
@@ -35,12 +38,18 @@ void feed_chunk(XXH3_state_t* st, const ChunkContent& c) {
   const int32_t ij[2] = {c.coord.i, c.coord.j};
   XXH3_64bits_update(st, ij, sizeof ij);
   feed_mesh(st, c.terrain);
+  // Per object its four words then its five floats, gathered into one buffer and fed at once.
+  constexpr size_t kObjectBytes = 4 * sizeof(uint32_t) + 5 * sizeof(float);
+  std::vector<unsigned char> bytes(c.objects.size() * kObjectBytes);
+  unsigned char* out = bytes.data();
   for (const Vegetation& v : c.objects) {
     const uint32_t w[4] = {v.asset, uint32_t(v.role), uint32_t(v.placement), v.instance_id};
     const float f[5] = {v.position.x(), v.position.y(), v.position.z(), v.yaw, v.scale};
-    XXH3_64bits_update(st, w, sizeof w);
-    XXH3_64bits_update(st, f, sizeof f);
+    std::memcpy(out, w, sizeof w);
+    std::memcpy(out + sizeof w, f, sizeof f);
+    out += kObjectBytes;
   }
+  XXH3_64bits_update(st, bytes.data(), bytes.size());
 }
 
 /// Hash of chunks fed in order.
@@ -86,11 +95,15 @@ BuiltWorld summarise_world(std::vector<ChunkContent> chunks) {
   std::sort(w.chunks.begin(), w.chunks.end(),
             [](const ChunkContent& a, const ChunkContent& b) { return a.coord < b.coord; });
   for (const ChunkContent& c : w.chunks) accumulate(w.totals, c.stats);
-  std::vector<uint32_t> assets;
+  std::vector<bool> used;  // by asset index
   for (const ChunkContent& c : w.chunks)
-    for (const Vegetation& v : c.objects) assets.push_back(v.asset);
-  std::sort(assets.begin(), assets.end());
-  w.totals.distinct_assets = uint64_t(std::unique(assets.begin(), assets.end()) - assets.begin());
+    for (const Vegetation& v : c.objects) {
+      if (v.asset >= used.size()) used.resize(size_t(v.asset) + 1, false);
+      if (!used[v.asset]) {
+        used[v.asset] = true;
+        ++w.totals.distinct_assets;
+      }
+    }
   w.hash = world_hash(w.chunks);
   return w;
 }

@@ -128,6 +128,6 @@ class SilvaDataset:
             sample["normal"] = read_normal(self.path(index, "normal", "png"))
         lidar = self.path(index, "lidar", "bin")
         if os.path.isfile(lidar):
-            label = self.path(index, "lidar", "label")
+            label = self.path(index, "lidar_labels", "label")
             sample["lidar"], sample["lidar_labels"] = read_lidar(lidar, label if os.path.isfile(label) else None)
         return sample

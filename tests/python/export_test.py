@@ -3,7 +3,7 @@
 
 Usage: export_test.py SILVA WORKDIR TEST   (TEST: generate, coco-panoptic, coco-instances, cityscapes, colmap,
 nerfstudio, semantickitti, errors). `generate` makes the small dataset the others read (a ctest fixture);
-semantickitti generates its own small dataset with LiDAR.
+semantickitti generates its own small dataset with LiDAR (and checks python/silva_dataset's LiDAR read-back on it).
 """
 import json
 import os
@@ -12,8 +12,10 @@ import subprocess
 import sys
 
 os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
+from silva_dataset import SilvaDataset  # noqa: E402  (the loader's LiDAR read-back, beside the independent reads)
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
 SEED = 4242
@@ -308,6 +310,7 @@ def check_semantickitti():
     for silva_id, kitti_id in to_kitti.items():
         lut[silva_id] = kitti_id
     numbers = {"autopilot": "00", "random": "01", "custom": "02"}
+    loader = SilvaDataset(dataset)
     counts, scans = {}, 0
     for sequence, frames in manifest["frames"].items():
         seq = os.path.join(out, "sequences", numbers[sequence])
@@ -331,6 +334,10 @@ def check_semantickitti():
             assert label.shape[0] == scan.shape[0] == source.shape[0]
             assert np.array_equal(label & 0xFFFF, lut[source & 0xFFFF]), f"{sequence}/{f}: classes are not the mapping"
             assert np.array_equal(label >> 16, source >> 16), f"{sequence}/{f}: instances differ"
+            sample = loader[loader.frames.index((sequence, f))]
+            assert np.array_equal(sample["lidar"], source_scan), f"{sequence}/{f}: the loader's points differ"
+            assert sample["lidar_labels"] is not None and np.array_equal(sample["lidar_labels"], source), \
+                f"{sequence}/{f}: the loader's LiDAR labels are not lidar_labels/{f:06d}.label"
             for kid, n in zip(*np.unique(label & 0xFFFF, return_counts=True)):
                 counts[int(kid)] = counts.get(int(kid), 0) + int(n)
             assert os.path.samefile(os.path.join(seq, "image_2", f"{f:06d}.png"), os.path.join(src, "rgb", f"{f:06d}.png"))
