@@ -1,6 +1,7 @@
 // SemanticKITTI export (CONTRACT.md "Export formats"): sequences/NN/ with velodyne/ (the KITTI scans, linked),
-// labels/ (Silva's class id in the low 16 bits replaced by the ontology's SemanticKITTI id, the instance in the
-// high 16 bits kept), calib.txt and poses.txt (Silva's, already in KITTI form), times.txt and image_2/ (the
+// labels/ (Silva's class id in the low 16 bits replaced by the ontology's SemanticKITTI id; in the high 16 bits the
+// object's index within its sequence, the same in every scan that sees it, where the dataset's own files number
+// a scan's objects within the scan), calib.txt and poses.txt (Silva's, already in KITTI form), times.txt and image_2/ (the
 // RGB images when the dataset has them: calib's P2 is the capture camera). Sequence numbers are fixed per Silva
 // sequence: autopilot 00, random 01, custom 02. semantic-kitti.yaml is the label map the semantic-kitti-api
 // reads (labels, color_map, content, learning_map, learning_map_inv, learning_ignore, split).
@@ -65,9 +66,40 @@ void require_file(const fs::path& path) {
   if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
 }
 
-/// Rewrites frame `f`'s labels into `out` and counts its points per SemanticKITTI id.
-void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, const fs::path& out,
-                  std::map<int, uint64_t>& counts) {
+/// Per frame, its scan's instance index (the high 16 bits of a dataset label) -> the object's index within the
+/// frame's sequence: objects numbered 1, 2, ... in the order the sequence's scans first see them (frame order, then
+/// scan index), so one object keeps one index in every scan. InputError for a sequence of more than 65 535 objects.
+std::vector<std::vector<uint32_t>> sequence_instances(const Dataset& d) {
+  std::vector<std::vector<uint32_t>> remap(d.frames.size());
+  std::map<std::string, std::map<uint64_t, uint32_t>> numbered;  // sequence -> instance_id -> index
+  for (size_t i = 0; i < d.frames.size(); ++i) {
+    const fs::path table = d.file(d.frames[i], "lidar_labels", "json");
+    require_file(table);
+    const nlohmann::json j = parse_json_text(read_text_file(table), table.string());
+    std::map<uint64_t, uint32_t>& seen = numbered[d.frames[i].sequence];
+    remap[i].assign(1, 0);
+    try {
+      for (const nlohmann::json& e : j.at("instances")) {
+        const uint64_t scan_index = e.at("index").get<uint64_t>();
+        if (scan_index != remap[i].size())
+          throw InputError(table.string() + ": instance indices must run 1, 2, ...; found " + std::to_string(scan_index));
+        const auto [it, added] = seen.emplace(e.at("instance_id").get<uint64_t>(), uint32_t(seen.size() + 1));
+        if (added && it->second > 0xFFFFu)
+          throw InputError(table.string() + ": sequence '" + d.frames[i].sequence +
+                           "' holds more than 65535 objects, more than a SemanticKITTI label's 16 instance bits");
+        remap[i].push_back(it->second);
+      }
+    } catch (const nlohmann::json::exception&) {
+      throw InputError(table.string() + ": not an instance table {\"instances\": [{\"index\", \"instance_id\", ...}]}");
+    }
+  }
+  return remap;
+}
+
+/// Rewrites frame `f`'s labels into `out` (instances renumbered by `instances`, from sequence_instances) and counts
+/// its points per SemanticKITTI id.
+void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, const std::vector<uint32_t>& instances,
+                  const fs::path& out, std::map<int, uint64_t>& counts) {
   const fs::path scan = d.file(f, "lidar", "bin"), label = d.file(f, "lidar_labels", "label");
   require_file(scan);
   require_file(label);
@@ -85,8 +117,13 @@ void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, 
     if (cls > 255 || map.kitti[cls] < 0)
       throw InputError(label.string() + ": point " + std::to_string(i / 4) + " has class id " + std::to_string(cls) +
                        ", which ontology.json does not hold");
+    const uint32_t instance = v >> 16;
+    if (instance >= instances.size())
+      throw InputError(label.string() + ": point " + std::to_string(i / 4) + " has instance " +
+                       std::to_string(instance) + ", which " + f.sequence + "/lidar_labels/" +
+                       label.stem().string() + ".json does not hold");
     ++counts[map.kitti[cls]];
-    v = (v & 0xFFFF0000u) | uint32_t(map.kitti[cls]);
+    v = instances[instance] << 16 | uint32_t(map.kitti[cls]);
     std::memcpy(bytes.data() + i, &v, 4);
   }
   write_file_atomic(out, bytes);
@@ -158,13 +195,14 @@ void export_semantickitti(const Dataset& d, const fs::path& out) {
   }
   for (const auto& [sequence, text] : times)
     write_file_atomic(out / "sequences" / two_digits(sequence_number(sequence)) / "times.txt", text);
+  const std::vector<std::vector<uint32_t>> instances = sequence_instances(d);
   std::vector<std::map<int, uint64_t>> counts(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
     const fs::path seq = out / "sequences" / two_digits(sequence_number(f.sequence));
     char name[16];
     std::snprintf(name, sizeof name, "%06d", f.frame);
-    write_labels(d, f, map, seq / "labels" / (std::string(name) + ".label"), counts[i]);  // checks the scan too
+    write_labels(d, f, map, instances[i], seq / "labels" / (std::string(name) + ".label"), counts[i]);  // checks the scan too
     link_or_copy(d.file(f, "lidar", "bin"), seq / "velodyne" / (std::string(name) + ".bin"));
     if (images) link_or_copy(d.file(f, "rgb", "png"), seq / "image_2" / (std::string(name) + ".png"));
   });

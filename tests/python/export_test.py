@@ -311,6 +311,7 @@ def check_semantickitti():
         lut[silva_id] = kitti_id
     numbers = {"autopilot": "00", "random": "01", "custom": "02"}
     loader = SilvaDataset(dataset)
+    sequence_index, index_owner, seen_in = {}, {}, {}  # (sequence, object) -> exported index and back; scans
     counts, scans = {}, 0
     for sequence, frames in manifest["frames"].items():
         seq = os.path.join(out, "sequences", numbers[sequence])
@@ -321,6 +322,10 @@ def check_semantickitti():
         assert np.allclose(tr, np.array(sensor["lidar_to_camera"]), atol=1e-9), "Tr is not the LiDAR mount"
         assert len(poses) == frames
         first = camera(sequence, 0, src)[1]
+        # calib.txt's P2 puts pixel centres on integers (KITTI's convention): Silva's K moved by half a pixel.
+        k0 = camera(sequence, 0, src)[0]
+        p2 = read_kitti_matrices(os.path.join(seq, "calib.txt"), "P2")[0][:3, :3]
+        assert np.allclose(p2, k0 - np.array([[0, 0, 0.5], [0, 0, 0.5], [0, 0, 0]]), atol=1e-9), (p2, k0)
         times = [float(t) for t in open(os.path.join(seq, "times.txt"))]
         assert np.allclose(times, np.arange(frames) / sensor["rotation_hz"], atol=1e-6), times
         for f in range(frames):
@@ -333,7 +338,18 @@ def check_semantickitti():
             source = np.fromfile(os.path.join(src, "lidar_labels", f"{f:06d}.label"), dtype="<u4")
             assert label.shape[0] == scan.shape[0] == source.shape[0]
             assert np.array_equal(label & 0xFFFF, lut[source & 0xFFFF]), f"{sequence}/{f}: classes are not the mapping"
-            assert np.array_equal(label >> 16, source >> 16), f"{sequence}/{f}: instances differ"
+            # One object, one instance index in every scan of its sequence (the dataset numbers them per scan).
+            table = json.load(open(os.path.join(src, "lidar_labels", f"{f:06d}.json")))["instances"]
+            object_of = {e["index"]: e["instance_id"] for e in table}
+            for scan_index, kitti_index in set(zip((source >> 16).tolist(), (label >> 16).tolist())):
+                assert (scan_index == 0) == (kitti_index == 0), f"{sequence}/{f}: instance {scan_index} -> {kitti_index}"
+                if scan_index:
+                    obj = object_of[scan_index]
+                    seen_in[(sequence, obj)] = seen_in.get((sequence, obj), 0) + 1
+                    assert sequence_index.setdefault((sequence, obj), kitti_index) == kitti_index, \
+                        f"{sequence}/{f}: object {obj} changed its instance index"
+                    assert index_owner.setdefault((sequence, kitti_index), obj) == obj, \
+                        f"{sequence}/{f}: instance index {kitti_index} names two objects"
             sample = loader[loader.frames.index((sequence, f))]
             assert np.array_equal(sample["lidar"], source_scan), f"{sequence}/{f}: the loader's points differ"
             assert sample["lidar_labels"] is not None and np.array_equal(sample["lidar_labels"], source), \
@@ -345,6 +361,7 @@ def check_semantickitti():
                     open(os.path.join(during_run, "sequences", numbers[sequence], "labels", f"{f:06d}.label"), "rb") as b:
                 assert a.read() == b.read(), "output.formats differs from silva export"
             scans += 1
+    assert max(seen_in.values()) > 1, "no object is seen by two scans: the instance check compared nothing"
     try:
         import yaml
     except ImportError:

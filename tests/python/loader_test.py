@@ -79,6 +79,9 @@ def check_card():
         assert abs(row["fraction"] - pixels[row["id"]] / pixels.sum()) < 1e-12
         assert row["instances"] == instances[row["id"]], row
     assert [b["pixels"] for b in card["depth_histogram"]] == depth.tolist()
+    bins = card["depth_histogram"]
+    assert all(b["to_m"] == b["from_m"] + 2 for b in bins[:-1]), "depth bins are not 2 m wide"
+    assert bins[-1]["to_m"] is None, f"the last depth bin holds everything beyond {bins[-1]['from_m']} m: {bins[-1]}"
     assert card["class_map"] is not None and card["class_map"]["width"] > 0
     rellis = card["published"]["rellis3d"]["classes"]
     assert abs(sum(r["published_share"] for r in rellis) - 1) < 1e-9

@@ -128,8 +128,11 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const Ca
   nlohmann::json sizes = nlohmann::json::array(), depth = nlohmann::json::array();
   for (int k = 0; k < io::CardCounts::kSizeBins; ++k)
     sizes.push_back({{"min_pixels", uint64_t(1) << k}, {"instances", c.instance_sizes[size_t(k)]}});
-  for (int k = 0; k < io::CardCounts::kDepthBins; ++k)
-    depth.push_back({{"from_m", 2 * k}, {"to_m", 2 * k + 2}, {"pixels", c.depth[size_t(k)]}});
+  for (int k = 0; k < io::CardCounts::kDepthBins; ++k) {  // the last bin is open-ended: to_m null
+    const bool last = k + 1 == io::CardCounts::kDepthBins;
+    depth.push_back({{"from_m", 2 * k}, {"to_m", last ? nlohmann::json() : nlohmann::json(2 * k + 2)},
+                     {"pixels", c.depth[size_t(k)]}});
+  }
   return {{"seed", d.seed},
           {"silva_version", d.manifest.value("silva_version", "")},
           {"frames", d.manifest.at("frames")},
@@ -216,7 +219,9 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
           row["rugd"].get<std::string>() + " | " + row["rellis"].get<std::string>() + " |\n";
   md += "\nShares are of all " + std::to_string(c.pixels) +
         " semantic pixels, counted from the semantic PNGs; instances are instance-table rows with pixels. "
-        "The RUGD and RELLIS-3D columns name the class each maps to (ontology.json).\n\n";
+        "The RUGD and RELLIS-3D columns name the class each maps to (ontology.json). A tree's instance is its "
+        "woody skeleton, trunk and branches together (one instance can span the whole crown); its leaves and needles "
+        "are canopy, which has no instance.\n\n";
   md += "## Instance sizes\n\n![instances per size](card_instance_sizes.png)\n\n";
   md += "## Depth\n\n![depth histogram](card_depth.png)\n\n" + std::to_string(c.depth_no_hit) +
         " pixels hit nothing (sky or beyond camera.far); the last bin holds 64 m and farther.\n\n";
