@@ -28,12 +28,12 @@ std::vector<uint16_t> cityscapes_ids(const std::vector<InstanceEntry>& table, co
   return ids;
 }
 
-/// Writes frame `f`'s ground truth into `gt` and links its RGB into `left`.
+/// Writes frame `f`'s ground truth into `gt` and places its RGB into `left`.
 void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string& city,
-                      const std::filesystem::path& left, const std::filesystem::path& gt) {
+                      const std::filesystem::path& left, const std::filesystem::path& gt, const ExportOptions& options) {
   const std::string stem = city + "_" + f.stem();
-  link_or_copy(d.file(f, "rgb", "png"), left / (stem + "_leftImg8bit.png"));
-  link_or_copy(d.file(f, "semantic", "png"), gt / (stem + "_gtFine_labelIds.png"));
+  place_file(d.file(f, "rgb", "png"), left / (stem + "_leftImg8bit.png"), options);
+  place_file(d.file(f, "semantic", "png"), gt / (stem + "_gtFine_labelIds.png"), options);
   const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
   const std::vector<uint16_t> ids = cityscapes_ids(read_instance_table(d.file(f, "instance", "json")),
@@ -47,7 +47,7 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
     }
   write_file_atomic(gt / (stem + "_gtFine_instanceIds.png"), encode_png_grey16(out, w, h));
   if (d.has("semantic_color")) {
-    link_or_copy(d.file(f, "semantic_color", "png"), gt / (stem + "_gtFine_color.png"));
+    place_file(d.file(f, "semantic_color", "png"), gt / (stem + "_gtFine_color.png"), options);
     return;
   }
   std::array<std::array<uint8_t, 3>, 256> colors{};
@@ -63,13 +63,13 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
 
 }  // namespace
 
-void export_cityscapes(const Dataset& d, const std::filesystem::path& out) {
+void export_cityscapes(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   for (const char* type : {"rgb", "semantic", "instance"}) d.require(type, "cityscapes");
   const std::string city = seed_folder_name(d.seed);
   const std::filesystem::path left = out / "leftImg8bit" / "train" / city, gt = out / "gtFine" / "train" / city;
   create_folder(left);
   create_folder(gt);
-  for_each_frame(d, [&](size_t i) { cityscapes_frame(d, d.frames[i], city, left, gt); });
+  for_each_frame(d, [&](size_t i) { cityscapes_frame(d, d.frames[i], city, left, gt, options); });
   write_file_atomic(out / "ontology.json", ontology_json(d.ontology));
 }
 

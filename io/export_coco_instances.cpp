@@ -1,5 +1,6 @@
 // COCO instances export (CONTRACT.md "Export formats"): one annotation per row of each frame's instance
-// table, its mask as compressed RLE; a tree is its trunk instance (canopy pixels carry no instance).
+// table, its mask as compressed RLE; a tree is its trunk instance (canopy pixels carry no instance). Instances
+// covering fewer than ExportOptions::min_instance_area pixels of the frame are iscrowd 1.
 #include "io/coco_common.hpp"
 #include "io/export_formats.hpp"
 
@@ -7,8 +8,9 @@ namespace silva::io {
 
 namespace {
 
-/// The annotations of frame `f` (ids assigned later).
-std::vector<nlohmann::json> instance_annotations(const Dataset& d, const DatasetFrame& f, nlohmann::json& image) {
+/// The annotations of frame `f` (ids assigned later); instances under options.min_instance_area pixels are crowds.
+std::vector<nlohmann::json> instance_annotations(const Dataset& d, const DatasetFrame& f, const ExportOptions& options,
+                                                 nlohmann::json& image) {
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
   const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
   const int n = int(table.size());
@@ -25,7 +27,7 @@ std::vector<nlohmann::json> instance_annotations(const Dataset& d, const Dataset
     if (!b.area) continue;
     annotations.push_back({{"image_id", f.global_index},
                            {"category_id", e.class_id},
-                           {"iscrowd", 0},
+                           {"iscrowd", b.area < options.min_instance_area ? 1 : 0},
                            {"area", b.area},
                            {"bbox", b.bbox()},
                            {"segmentation", {{"size", {instance.rows, instance.cols}},
@@ -38,15 +40,15 @@ std::vector<nlohmann::json> instance_annotations(const Dataset& d, const Dataset
 
 }  // namespace
 
-void export_coco_instances(const Dataset& d, const std::filesystem::path& out) {
+void export_coco_instances(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   for (const char* type : {"rgb", "instance"}) d.require(type, "coco-instances");
   create_folder(out / "images");
   std::vector<nlohmann::json> images(d.frames.size());
   std::vector<std::vector<nlohmann::json>> per_frame(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
-    link_or_copy(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"));
-    per_frame[i] = instance_annotations(d, f, images[i]);
+    place_file(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"), options);
+    per_frame[i] = instance_annotations(d, f, options, images[i]);
   });
   nlohmann::json annotations = nlohmann::json::array();
   for (auto& frame : per_frame)

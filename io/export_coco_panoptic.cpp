@@ -1,5 +1,6 @@
 // COCO panoptic export (CONTRACT.md "Export formats"): segment id = instance index · 256 + class id, the
-// background role void (0); a tree is its trunk instance, canopy pixels are the stuff class tree_canopy.
+// background role void (0); a tree is its trunk instance, canopy pixels are the stuff class tree_canopy. Thing
+// segments covering fewer than ExportOptions::min_instance_area pixels of the frame are iscrowd 1.
 #include <map>
 
 #include "io/atomic_file.hpp"
@@ -13,7 +14,7 @@ namespace {
 
 /// Writes frame `f`'s panoptic PNG and returns its annotation.
 nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& out,
-                              nlohmann::json& image) {
+                              const ExportOptions& options, nlohmann::json& image) {
   const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
   const uint8_t void_id = d.ontology.id(Role::Background);
@@ -40,8 +41,9 @@ nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std
   nlohmann::json infos = nlohmann::json::array();
   for (const auto& [id, s] : segments) {
     const uint8_t c = uint8_t(id & 255u);
-    // A thing-class pixel without an instance cannot be told apart from its neighbours: a crowd region.
-    const bool crowd = has_instances[c] && id < 256u;
+    // A thing-class pixel without an instance cannot be told apart from its neighbours: a crowd region; so is a
+    // thing too small to learn.
+    const bool crowd = has_instances[c] && (id < 256u || s.area < options.min_instance_area);
     infos.push_back({{"id", id}, {"category_id", c}, {"iscrowd", crowd ? 1 : 0},
                      {"bbox", s.bbox()}, {"area", s.area}});
   }
@@ -51,15 +53,15 @@ nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std
 
 }  // namespace
 
-void export_coco_panoptic(const Dataset& d, const std::filesystem::path& out) {
+void export_coco_panoptic(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   for (const char* type : {"rgb", "semantic", "instance"}) d.require(type, "coco-panoptic");
   create_folder(out / "images");
   create_folder(out / "panoptic");
   std::vector<nlohmann::json> images(d.frames.size()), annotations(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
-    link_or_copy(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"));
-    annotations[i] = panoptic_frame(d, f, out, images[i]);
+    place_file(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"), options);
+    annotations[i] = panoptic_frame(d, f, out, options, images[i]);
   });
   write_json(out / "panoptic.json", {{"info", coco_info(d)},
                                      {"images", images},

@@ -56,7 +56,7 @@ std::vector<DepthPoint> frame_points(const Dataset& d, const DatasetFrame& f, co
 
 }  // namespace
 
-void export_colmap(const Dataset& d, const std::filesystem::path& out) {
+void export_colmap(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   d.require("rgb", "colmap");
   const std::filesystem::path model = out / "sparse" / "0";
   create_folder(out / "images");
@@ -65,7 +65,7 @@ void export_colmap(const Dataset& d, const std::filesystem::path& out) {
   std::vector<std::vector<DepthPoint>> points(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
-    link_or_copy(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"));
+    place_file(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"), options);
     records[i] = read_camera_json(d.file(f, "camera", "json"));
     points[i] = frame_points(d, f, records[i].camera);
   });

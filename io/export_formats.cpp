@@ -21,14 +21,22 @@ ExportFormat parse_export_format(const std::string& name, const std::string& whe
   throw InputError(where + ": unknown format '" + name + "' (allowed: " + allowed + ")");
 }
 
-void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out) {
+void place_file(const std::filesystem::path& from, const std::filesystem::path& to, const ExportOptions& options) {
+  if (!options.copy_files) return link_or_copy(from, to);
+  std::error_code ec;
+  std::filesystem::copy_file(from, to, ec);
+  if (ec) throw IoError("cannot copy " + from.string() + " to " + to.string() + ": " + ec.message());
+}
+
+void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out,
+                    const ExportOptions& options) {
   switch (format) {
-    case ExportFormat::CocoPanoptic: return export_coco_panoptic(dataset, out);
-    case ExportFormat::CocoInstances: return export_coco_instances(dataset, out);
-    case ExportFormat::Cityscapes: return export_cityscapes(dataset, out);
-    case ExportFormat::Colmap: return export_colmap(dataset, out);
-    case ExportFormat::Nerfstudio: return export_nerfstudio(dataset, out);
-    case ExportFormat::SemanticKitti: return export_semantickitti(dataset, out);
+    case ExportFormat::CocoPanoptic: return export_coco_panoptic(dataset, out, options);
+    case ExportFormat::CocoInstances: return export_coco_instances(dataset, out, options);
+    case ExportFormat::Cityscapes: return export_cityscapes(dataset, out, options);
+    case ExportFormat::Colmap: return export_colmap(dataset, out, options);
+    case ExportFormat::Nerfstudio: return export_nerfstudio(dataset, out, options);
+    case ExportFormat::SemanticKitti: return export_semantickitti(dataset, out, options);
   }
 }
 

@@ -2,7 +2,9 @@
 /// @file The formats `silva export` converts a finished dataset into (CONTRACT.md "Export formats"),
 /// one source file per format. Each exporter writes into an existing empty folder, reads the dataset's
 /// files only (nothing is rendered again), works on frames in parallel on the caller's TBB arena and
-/// writes the same bytes for any thread count. Source images are hard-linked (copied across file systems).
+/// writes the same bytes for any thread count. Source images are hard-linked (copied across file systems), or
+/// copied with ExportOptions::copy_files.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,25 +23,41 @@ const std::vector<std::string>& export_format_names();
 /// The name of `format`.
 const std::string& export_format_name(ExportFormat format);
 
+/// How an export places the dataset's files it takes over unchanged (images, scans, calibration), and which
+/// instances the COCO exports mark as crowd fragments.
+struct ExportOptions {
+  bool copy_files = false;  ///< Copy them (edits of the export leave the dataset alone) instead of hard-linking.
+  /// Instances covering fewer pixels in a frame are iscrowd 1 in the COCO exports (fragments a detector should
+  /// neither learn nor be scored on); 0 marks none.
+  int64_t min_instance_area = kDefaultMinInstanceArea;
+  /// The default min_instance_area (pixels): below a 4 x 4 patch.
+  static constexpr int64_t kDefaultMinInstanceArea = 16;
+};
+
+/// Places the dataset file `from` at `to`: a hard link (a copy across file systems), or a copy with
+/// options.copy_files. IoError when neither can be made.
+void place_file(const std::filesystem::path& from, const std::filesystem::path& to, const ExportOptions& options);
+
 /// Parses a format name; InputError "<where>: unknown format 'x' (allowed: ...)" otherwise.
 ExportFormat parse_export_format(const std::string& name, const std::string& where);
 
 /// Writes `dataset` as `format` into the empty folder `out`. InputError when the dataset lacks an output
 /// type the format needs; IoError when a file cannot be written.
-void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out);
+void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out,
+                    const ExportOptions& options = {});
 
 /// COCO panoptic: images/, panoptic/<stem>.png (segment id = R + 256 G + 65536 B) and panoptic.json.
-void export_coco_panoptic(const Dataset& dataset, const std::filesystem::path& out);
+void export_coco_panoptic(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// COCO instances (detection): images/ and instances.json with compressed RLE masks, bboxes and areas.
-void export_coco_instances(const Dataset& dataset, const std::filesystem::path& out);
+void export_coco_instances(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// Cityscapes: leftImg8bit/train/<seed>/ and gtFine/train/<seed>/ (labelIds, instanceIds, color).
-void export_cityscapes(const Dataset& dataset, const std::filesystem::path& out);
+void export_cityscapes(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// COLMAP text model: sparse/0/{cameras,images,points3D}.txt and images/.
-void export_colmap(const Dataset& dataset, const std::filesystem::path& out);
+void export_colmap(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// nerfstudio / instant-ngp / 3DGS: transforms.json (OpenGL camera axes), images/, depth/, masks/.
-void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out);
+void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// SemanticKITTI (LiDAR): sequences/NN/{velodyne,labels,image_2}/, calib.txt, poses.txt, times.txt and
 /// semantic-kitti.yaml, the label map.
-void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out);
+void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 
 }  // namespace silva::io

@@ -1,6 +1,8 @@
 // nerfstudio export (CONTRACT.md "Export formats"): transforms.json with OpenGL camera axes (x right,
 // y up, looking down -z): transform_matrix = camera_to_world · diag(1, -1, -1, 1). Intrinsics are
-// nerfstudio's pixel-centre convention (+0.5), the same as Silva's, so fl_x, fl_y, cx, cy carry over.
+// nerfstudio's pixel-centre convention (+0.5), the same as Silva's, so fl_x, fl_y, cx, cy carry over. depth/ holds
+// the depth PNGs in millimetres (nerfstudio's default depth_unit_scale_factor 1e-3) with the clamped value 65535
+// (anything at or beyond 65.535 m) written as 0, which nerfstudio's depth losses skip like a pixel without a hit.
 #include "io/atomic_file.hpp"
 #include "io/export_formats.hpp"
 #include "io/png_writer.hpp"
@@ -27,9 +29,22 @@ void write_mask(const Dataset& d, const DatasetFrame& f, const std::filesystem::
   write_file_atomic(path, encode_png_grey8(mask, semantic.cols, semantic.rows));
 }
 
+/// Frame `f`'s depth PNG (millimetres) with the clamp value 65535 made 0 (no depth), so that no surface reads as
+/// 65.535 m.
+void write_depth(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& path) {
+  const cv::Mat mm = read_image(d.file(f, "depth", "png"), CV_16UC1);
+  std::vector<uint16_t> depth(size_t(mm.cols) * mm.rows);
+  for (int y = 0; y < mm.rows; ++y)
+    for (int x = 0; x < mm.cols; ++x) {
+      const uint16_t v = mm.at<uint16_t>(y, x);
+      depth[size_t(y) * mm.cols + x] = v == 65535 ? 0 : v;
+    }
+  write_file_atomic(path, encode_png_grey16(depth, mm.cols, mm.rows));
+}
+
 }  // namespace
 
-void export_nerfstudio(const Dataset& d, const std::filesystem::path& out) {
+void export_nerfstudio(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   d.require("rgb", "nerfstudio");
   const bool depth = d.has("depth"), masks = d.has("semantic");
   create_folder(out / "images");
@@ -42,7 +57,7 @@ void export_nerfstudio(const Dataset& d, const std::filesystem::path& out) {
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
     const std::string name = f.stem() + ".png";
-    link_or_copy(d.file(f, "rgb", "png"), out / "images" / name);
+    place_file(d.file(f, "rgb", "png"), out / "images" / name, options);
     records[i] = read_camera_json(d.file(f, "camera", "json"));
     const Camera& c = records[i].camera;
     nlohmann::json frame = {{"file_path", "images/" + name},
@@ -50,7 +65,7 @@ void export_nerfstudio(const Dataset& d, const std::filesystem::path& out) {
                             {"fl_x", c.fx}, {"fl_y", c.fy}, {"cx", c.cx}, {"cy", c.cy}, {"w", c.width},
                             {"h", c.height}};
     if (depth) {
-      link_or_copy(d.file(f, "depth", "png"), out / "depth" / name);
+      write_depth(d, f, out / "depth" / name);
       frame["depth_file_path"] = "depth/" + name;
     }
     if (masks) {

@@ -166,7 +166,7 @@ std::string label_yaml(const KittiMap& map, const std::map<int, uint64_t>& count
 
 }  // namespace
 
-void export_semantickitti(const Dataset& d, const fs::path& out) {
+void export_semantickitti(const Dataset& d, const fs::path& out, const ExportOptions& options) {
   d.require("lidar", "semantickitti");
   const KittiMap map = kitti_map(d);
   const bool images = d.has("rgb");
@@ -186,7 +186,7 @@ void export_semantickitti(const Dataset& d, const fs::path& out) {
       if (images) create_folder(seq / "image_2");
       for (const char* name : {"calib.txt", "poses.txt"}) {
         require_file(d.dir / f.sequence / name);
-        link_or_copy(d.dir / f.sequence / name, seq / name);
+        place_file(d.dir / f.sequence / name, seq / name, options);
       }
     }
     char line[32];
@@ -203,8 +203,8 @@ void export_semantickitti(const Dataset& d, const fs::path& out) {
     char name[16];
     std::snprintf(name, sizeof name, "%06d", f.frame);
     write_labels(d, f, map, instances[i], seq / "labels" / (std::string(name) + ".label"), counts[i]);  // checks the scan too
-    link_or_copy(d.file(f, "lidar", "bin"), seq / "velodyne" / (std::string(name) + ".bin"));
-    if (images) link_or_copy(d.file(f, "rgb", "png"), seq / "image_2" / (std::string(name) + ".png"));
+    place_file(d.file(f, "lidar", "bin"), seq / "velodyne" / (std::string(name) + ".bin"), options);
+    if (images) place_file(d.file(f, "rgb", "png"), seq / "image_2" / (std::string(name) + ".png"), options);
   });
   std::map<int, uint64_t> total;
   for (const auto& c : counts)

@@ -2,7 +2,7 @@
 """`silva export` read back by independent readers and compared pixel for pixel / pose for pose with the source.
 
 Usage: export_test.py SILVA WORKDIR TEST   (TEST: generate, coco-panoptic, coco-instances, cityscapes, colmap,
-nerfstudio, semantickitti, errors). `generate` makes the small dataset the others read (a ctest fixture);
+nerfstudio, semantickitti, errors, copy). `generate` makes the small dataset the others read (a ctest fixture);
 semantickitti generates its own small dataset with LiDAR (and checks python/silva_dataset's LiDAR read-back on it).
 """
 import json
@@ -81,7 +81,7 @@ def check_coco_panoptic():
     cats = {c["id"]: c for c in doc["categories"]}
     assert {c for c, v in cats.items() if v["isthing"]} == things()
     assert len(doc["annotations"]) == len(frames())
-    segments = 0
+    segments = crowds = 0
     for (sequence, frame), ann, img in zip(frames(), doc["annotations"], doc["images"]):
         assert ann["image_id"] == img["id"]
         rgb = cv2.cvtColor(read(os.path.join(out, "panoptic", ann["file_name"])), cv2.COLOR_BGR2RGB).astype(np.int64)
@@ -96,9 +96,14 @@ def check_coco_panoptic():
             assert s["area"] == len(xs)
             assert s["bbox"] == [xs.min(), ys.min(), xs.max() - xs.min() + 1, ys.max() - ys.min() + 1]
             assert s["category_id"] == s["id"] % 256 and s["category_id"] in cats
+            # Crowds: thing pixels without an instance, and thing segments under the default 16-pixel minimum.
+            thing = cats[s["category_id"]]["isthing"]
+            assert s["iscrowd"] == int(bool(thing) and (s["id"] < 256 or s["area"] < 16)), s
+            crowds += s["iscrowd"]
             segments += 1
         assert os.path.samefile(os.path.join(out, "images", img["file_name"]), source(sequence, frame, "rgb", "png"))
-    print(f"coco-panoptic: {segments} segments in {len(frames())} frames equal the source labels")
+    assert 0 < crowds < segments, (crowds, segments)
+    print(f"coco-panoptic: {segments} segments in {len(frames())} frames equal the source labels; {crowds} crowds")
 
 
 def rle_decode(counts, h, w):
@@ -146,7 +151,7 @@ def check_coco_instances():
     by_image = {}
     for a in doc["annotations"]:
         by_image.setdefault(a["image_id"], []).append(a)
-    count = 0
+    count = small = 0
     for (sequence, frame), img in zip(frames(), doc["images"]):
         instance = read(source(sequence, frame, "instance", "png"))
         table = json.load(open(source(sequence, frame, "instance", "json")))["instances"]
@@ -159,9 +164,21 @@ def check_coco_instances():
             ys, xs = np.nonzero(mask)
             assert a["area"] == len(xs) and a["category_id"] == e["class_id"] and a["instance_id"] == e["instance_id"]
             assert a["bbox"] == [xs.min(), ys.min(), xs.max() - xs.min() + 1, ys.max() - ys.min() + 1]
+            assert a["iscrowd"] == int(a["area"] < 16), f"{sequence}/{frame}: iscrowd {a['iscrowd']}, area {a['area']}"
+            small += a["iscrowd"]
             count += 1
     assert count > 0, "the test dataset shows no instance"
-    print(f"coco-instances: {count} instance masks equal the source instance images")
+    assert 0 < small < count, f"{small} of {count} instances under 16 pixels: the threshold is not exercised"
+    # --min-area 0 marks none, --min-area 100 more.
+    for min_area in (0, 100):
+        target = os.path.join(WORK, f"min-area-{min_area}")
+        shutil.rmtree(target, ignore_errors=True)
+        silva("export", DATASET, "--format", "coco-instances", "--out", target, "--min-area", str(min_area), "--quiet")
+        anns = json.load(open(os.path.join(target, "coco-instances", "instances.json")))["annotations"]
+        assert [a["iscrowd"] for a in anns] == [int(a["area"] < min_area) for a in anns], min_area
+    silva("export", DATASET, "--format", "coco-instances", "--out", target, "--min-area", "-1", expect=2)
+    print(f"coco-instances: {count} instance masks equal the source instance images; {small} under 16 pixels are "
+          "crowds")
 
 
 def check_cityscapes():
@@ -252,11 +269,16 @@ def check_nerfstudio():
     assert open(os.path.join(out, "transforms.json")).read() == during_run, "output.formats differs from export"
     doc = json.load(open(os.path.join(out, "transforms.json")))
     assert doc["camera_model"] == "OPENCV" and len(doc["frames"]) == len(frames())
-    checked = 0
+    checked = clamped = 0
     for (sequence, frame), f in zip(frames(), doc["frames"]):
         k, c2w = camera(sequence, frame)
         gl = np.array(f["transform_matrix"])
-        depth = read(os.path.join(out, f["depth_file_path"])).astype(np.float64) / 1000.0
+        exported_mm = read(os.path.join(out, f["depth_file_path"]))
+        source_mm = read(source(sequence, frame, "depth", "png"))
+        # The clamp (65535 mm: at or beyond 65.535 m) is no depth for nerfstudio; every other pixel is the dataset's.
+        assert np.array_equal(exported_mm, np.where(source_mm == 65535, 0, source_mm)), f"{sequence}/{frame}: depth"
+        clamped += int((source_mm == 65535).sum())
+        depth = exported_mm.astype(np.float64) / 1000.0
         mask = read(os.path.join(out, f["mask_path"]))
         semantic = read(source(sequence, frame, "semantic", "png"))
         assert np.array_equal(mask == 0, semantic == 0)
@@ -269,7 +291,8 @@ def check_nerfstudio():
             assert np.allclose(p_gl, p_cv, atol=1e-9), f"{sequence}/{frame} pixel {u},{v}: {p_gl} != {p_cv}"
             checked += 1
     assert checked > 0
-    print(f"nerfstudio: {checked} depth pixels reproject through the OpenGL poses onto the contract's poses")
+    print(f"nerfstudio: {checked} depth pixels reproject through the OpenGL poses onto the contract's poses; "
+          f"{clamped} clamped pixels are no depth")
 
 
 def read_kitti_matrices(path, key=None):
@@ -409,7 +432,26 @@ def check_errors():
           "line, exit 2")
 
 
+def check_copy():
+    """--copy: the export's images have the dataset's bytes in files of their own; editing one leaves the dataset."""
+    out = os.path.join(WORK, "copied")
+    shutil.rmtree(out, ignore_errors=True)
+    silva("export", DATASET, "--format", "colmap,nerfstudio", "--out", out, "--copy", "--quiet")
+    copied = 0
+    for fmt in ("colmap", "nerfstudio"):
+        for name in sorted(os.listdir(os.path.join(out, fmt, "images"))):
+            sequence, frame = name[:-len(".png")].rsplit("_", 1)
+            exported, original = os.path.join(out, fmt, "images", name), source(sequence, int(frame), "rgb", "png")
+            assert not os.path.samefile(exported, original), f"{fmt}/{name} is the dataset's file"
+            assert open(exported, "rb").read() == open(original, "rb").read(), f"{fmt}/{name}: bytes differ"
+            copied += 1
+    before = open(original, "rb").read()
+    open(exported, "ab").write(b"edit")
+    assert open(original, "rb").read() == before, "editing the export edited the dataset"
+    print(f"copy: {copied} images copied, none shared with the dataset")
+
+
 CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,
           "cityscapes": check_cityscapes, "colmap": check_colmap, "nerfstudio": check_nerfstudio,
-          "semantickitti": check_semantickitti, "errors": check_errors}
+          "semantickitti": check_semantickitti, "errors": check_errors, "copy": check_copy}
 CHECKS[TEST]()

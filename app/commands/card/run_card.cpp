@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/dataset_card.hpp"
+#include "io/export_formats.hpp"
 #include "io/json_read.hpp"
 #include "io/png_writer.hpp"
 #include "io/run_folder.hpp"
@@ -121,6 +122,20 @@ nlohmann::json published_rows(const io::Dataset& d, const io::CardCounts& c, con
   return rows;
 }
 
+/// The sentence on instances smaller than the COCO exports' default crowd threshold (size bins are powers of two).
+std::string small_instances_note(const io::CardCounts& c) {
+  constexpr int64_t threshold = io::ExportOptions::kDefaultMinInstanceArea;
+  uint64_t small = 0, all = 0;
+  for (int k = 0; k < io::CardCounts::kSizeBins; ++k) {
+    all += c.instance_sizes[size_t(k)];
+    if ((int64_t(1) << (k + 1)) <= threshold) small += c.instance_sizes[size_t(k)];
+  }
+  return std::to_string(small) + " of " + std::to_string(all) + " instances in a frame cover fewer than " +
+         std::to_string(threshold) + " pixels of it: `coco-instances` and `coco-panoptic` mark them iscrowd 1, so "
+         "that a detector neither learns nor is scored on such fragments (`silva export --min-area N` sets the "
+         "threshold; 0 marks none).\n\n";
+}
+
 /// card.json's object: counts, conditions and config differences (no timings: they live in run.json, so the card
 /// is the same for any thread count).
 nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const CameraMap& map) {
@@ -222,7 +237,7 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
         "The RUGD and RELLIS-3D columns name the class each maps to (ontology.json). A tree's instance is its "
         "woody skeleton, trunk and branches together (one instance can span the whole crown); its leaves and needles "
         "are canopy, which has no instance.\n\n";
-  md += "## Instance sizes\n\n![instances per size](card_instance_sizes.png)\n\n";
+  md += "## Instance sizes\n\n![instances per size](card_instance_sizes.png)\n\n" + small_instances_note(c);
   md += "## Depth\n\n![depth histogram](card_depth.png)\n\n" + std::to_string(c.depth_no_hit) +
         " pixels hit nothing (sky or beyond camera.far); the last bin holds 64 m and farther.\n\n";
   md += "## Cameras\n\n![camera positions](card_poses.png)\n\nTop down, world X to the right, Y up; a stroke "

@@ -15,6 +15,8 @@ struct ExportArgs {
   std::vector<std::string> formats;
   std::string out;
   bool overwrite = false;
+  bool copy = false;
+  int64_t min_area = io::ExportOptions::kDefaultMinInstanceArea;
   int threads = 0;
   OutputFlags output;
 };
@@ -32,6 +34,8 @@ int export_command(const ExportArgs& args) {
   }
   request.out_dir = args.out.empty() ? request.run_dir / "export" : std::filesystem::path(args.out);
   request.overwrite = args.overwrite;
+  request.options.copy_files = args.copy;
+  request.options.min_instance_area = args.min_area;
   const ThreadLimit limit(args.threads);
   return run_export(request, reporter);
 }
@@ -43,7 +47,8 @@ Handler add_export_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "export",
       "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap, "
-      "nerfstudio or semantickitti (LiDAR), each into <out>/<format>/; source files are hard-linked.");
+      "nerfstudio or semantickitti (LiDAR), each into <out>/<format>/; the dataset's images and scans are "
+      "hard-linked (editing one in place edits the dataset too) unless --copy.");
   cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
   cmd->add_option("--format", args->formats,
                   "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, or all (every "
@@ -54,10 +59,20 @@ Handler add_export_command(CLI::App& root) {
   cmd->add_option("--out", args->out, "folder that receives one sub-folder per format (default DIR/export)")
       ->type_name("DIR");
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing <out>/<format>/");
+  cmd->add_flag("--copy", args->copy,
+                "copy the dataset's images and scans into the export instead of hard-linking them, so that editing "
+                "the export never edits the dataset (uses their disk space again)");
+  cmd->add_option("--min-area", args->min_area,
+                  "instances covering fewer pixels of a frame are iscrowd 1 in coco-instances and coco-panoptic "
+                  "(fragments a detector should neither learn nor be scored on); 0 marks none")
+      ->check(CLI::Range(int64_t(0), int64_t(1) << 30))
+      ->default_val(io::ExportOptions::kDefaultMinInstanceArea)
+      ->type_name("PIXELS");
   add_threads_option(*cmd, args->threads);
   add_output_flags(*cmd, args->output);
   cmd->footer("Examples:\n  silva export out/1234567890 --format coco-panoptic\n"
-              "  silva export out/1234567890 --format all --out exports --overwrite");
+              "  silva export out/1234567890 --format all --out exports --overwrite\n"
+              "  silva export out/1234567890 --format colmap --copy");
   return [args] { return export_command(*args); };
 }
 

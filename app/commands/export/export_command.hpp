@@ -17,6 +17,7 @@ struct ExportRequest {
   bool all = false;                        ///< --format all: every camera format, semantickitti with lidar.
   std::filesystem::path out_dir;           ///< Each format goes to <out_dir>/<format>/.
   bool overwrite = false;                  ///< --overwrite: replace an existing <out_dir>/<format>/.
+  io::ExportOptions options;               ///< --copy: copy the dataset's files instead of hard-linking them.
 };
 
 /// Exports a finished dataset; returns the exit code. Throws InputError / IoError.
@@ -26,6 +27,6 @@ int run_export(const ExportRequest& request, const Reporter& reporter);
 /// [{"format", "dir", "seconds"}, ...]. An existing non-empty target without `overwrite` is InputError,
 /// checked for every format before any is written.
 nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
-                              const std::filesystem::path& out_dir, bool overwrite);
+                              const std::filesystem::path& out_dir, bool overwrite, const io::ExportOptions& options = {});
 
 }  // namespace silva::app

@@ -30,7 +30,7 @@ void remove_folder(const fs::path& dir) {
 }  // namespace
 
 nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
-                              const fs::path& out_dir, bool overwrite) {
+                              const fs::path& out_dir, bool overwrite, const io::ExportOptions& options) {
   for (io::ExportFormat format : formats) {
     const fs::path target = out_dir / io::export_format_name(format);
     if (!overwrite && holds_something(target))
@@ -43,7 +43,7 @@ nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::
     const fs::path target = out_dir / name, partial = out_dir / ("." + name + ".partial");
     remove_folder(partial);
     io::create_folder(partial);
-    io::export_dataset(dataset, format, partial);
+    io::export_dataset(dataset, format, partial, options);
     remove_folder(target);
     std::error_code ec;
     fs::rename(partial, target, ec);
@@ -63,7 +63,7 @@ int run_export(const ExportRequest& request, const Reporter& reporter) {
       if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
     }
   const Stopwatch clock;
-  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite);
+  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite, request.options);
   std::string line;
   for (const auto& w : written) {
     char buf[64];
