@@ -27,8 +27,8 @@ nlohmann::json coco_categories(const Ontology& ontology, bool things_only) {
   return categories;
 }
 
-nlohmann::json coco_image_entry(const DatasetFrame& f, int width, int height) {
-  return {{"id", f.global_index}, {"file_name", f.stem() + ".png"}, {"width", width}, {"height", height},
+nlohmann::json coco_image_entry(const DatasetFrame& f, const std::string& file_name, int width, int height) {
+  return {{"id", f.global_index}, {"file_name", file_name}, {"width", width}, {"height", height},
           {"sequence", f.sequence}, {"frame", f.frame}};
 }
 

@@ -29,9 +29,9 @@ struct PixelBox {
 /// isthing = 1 when a role of that id has instances; `things_only` keeps those alone.
 nlohmann::json coco_categories(const Ontology& ontology, bool things_only);
 
-/// The "images" entry of frame `f`: id = global index, file_name = <stem>.png, width, height,
+/// The "images" entry of frame `f`: id = global index, file_name (the image as placed), width, height,
 /// plus Silva's sequence and frame.
-nlohmann::json coco_image_entry(const DatasetFrame& f, int width, int height);
+nlohmann::json coco_image_entry(const DatasetFrame& f, const std::string& file_name, int width, int height);
 
 /// The COCO "info" object naming the source dataset.
 nlohmann::json coco_info(const Dataset& dataset);

@@ -1,8 +1,17 @@
-// Cityscapes export (CONTRACT.md "Export formats"): city = the seed, file stem <seed>_<sequence>_<frame>;
-// labelIds are Silva class ids, instanceIds = class id · 1000 + k (k = 0, 1, ... the frame's instances of
-// that class in ascending instance_id order), the class id alone for stuff and canopy pixels.
+// Cityscapes export (CONTRACT.md "Export formats"): city = the seed, file stem <seed>_<sequence>_<frame>, in the
+// split folder ExportOptions::cityscapes_split; labelIds are Silva class ids (not Cityscapes' own ids),
+// labelTrainIds the train ids of label_train_ids.json (the classes but the background's, in id order, from 0;
+// the background 255, ignored), instanceIds = class id · 1000 + k (k = 0, 1, ... the frame's instances of that
+// class in ascending instance_id order), the class id alone for stuff and canopy pixels; polygons.json the
+// outlines of every region (larger first) with the image size the loaders read.
+#include <algorithm>
+#include <array>
+
+#include <opencv2/imgproc.hpp>
+
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/coco_common.hpp"
 #include "io/export_formats.hpp"
 #include "io/ontology_file.hpp"
 #include "io/png_writer.hpp"
@@ -28,6 +37,92 @@ std::vector<uint16_t> cityscapes_ids(const std::vector<InstanceEntry>& table, co
   return ids;
 }
 
+/// Train id of every Silva class id: the ontology's class ids but the background role's, ascending, numbered from 0;
+/// 255 (ignored) for the background and for ids no class uses.
+std::array<uint8_t, 256> train_ids(const Ontology& ontology) {
+  std::array<bool, 256> used{};
+  for (const OntologyClass& c : ontology.classes) used[c.id] = true;
+  used[ontology.id(Role::Background)] = false;
+  std::array<uint8_t, 256> ids;
+  ids.fill(255);
+  uint8_t next = 0;
+  for (int id = 0; id < 256; ++id)
+    if (used[size_t(id)]) ids[size_t(id)] = next++;
+  return ids;
+}
+
+/// label_train_ids.json: each Silva class id's train id and name, and the ignore value.
+nlohmann::json train_ids_json(const Ontology& ontology) {
+  const std::array<uint8_t, 256> ids = train_ids(ontology);
+  nlohmann::json classes = nlohmann::json::array();
+  std::array<bool, 256> listed{};
+  for (const OntologyClass& c : ontology.classes) {
+    if (listed[c.id]) continue;
+    listed[c.id] = true;
+    classes.push_back({{"id", c.id}, {"name", c.name}, {"train_id", ids[c.id]}});
+  }
+  return {{"ignore_train_id", 255}, {"classes", classes}};
+}
+
+/// One outline of polygons.json: its label, its points (frame pixels) and the area it encloses.
+struct Outline {
+  std::string label;              ///< Class name.
+  std::vector<cv::Point> points;  ///< The outer contour.
+  double area = 0;                ///< Area enclosed (pixels), for the drawing order.
+};
+
+/// Outer outlines of the pixels where `mask` (a window of the frame at `origin`) is non-zero, one per connected
+/// region, appended to `outlines`.
+void add_outlines(const cv::Mat& mask, cv::Point origin, const std::string& label, std::vector<Outline>& outlines) {
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(mask, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE, origin);
+  for (std::vector<cv::Point>& contour : contours) {
+    const double area = cv::contourArea(contour);
+    outlines.push_back({label, std::move(contour), area});
+  }
+}
+
+/// A box's pixels as an OpenCV rectangle (empty when it holds none).
+cv::Rect rect_of(const PixelBox& b) { return b.area ? cv::Rect(b.x0, b.y0, b.x1 - b.x0 + 1, b.y1 - b.y0 + 1) : cv::Rect(); }
+
+/// polygons.json of one frame: image size and the outlines of every class's stuff regions (the background's too)
+/// and of every instance, labelled with the class names, larger enclosed areas first: drawn in order, as the
+/// Cityscapes tools draw them, a region inside another (a patch of sky in a crown) lands on top of it.
+nlohmann::json polygons_json(const Ontology& ontology, const cv::Mat& semantic, const cv::Mat& instance,
+                             const std::vector<InstanceEntry>& table) {
+  std::array<std::string, 256> names;
+  for (const OntologyClass& c : ontology.classes)
+    if (names[c.id].empty()) names[c.id] = c.name;
+  std::array<PixelBox, 256> stuff;
+  std::vector<PixelBox> things(table.size() + 1);
+  for (int y = 0; y < semantic.rows; ++y)
+    for (int x = 0; x < semantic.cols; ++x) {
+      const uint16_t k = instance.at<uint16_t>(y, x);
+      if (k) {
+        if (k < things.size()) things[k].add(x, y);
+      } else {
+        stuff[semantic.at<uint8_t>(y, x)].add(x, y);
+      }
+    }
+  std::vector<Outline> outlines;
+  for (int id = 0; id < 256; ++id) {
+    const cv::Rect r = rect_of(stuff[size_t(id)]);
+    if (!r.empty()) add_outlines((semantic(r) == id) & (instance(r) == 0), r.tl(), names[size_t(id)], outlines);
+  }
+  for (const InstanceEntry& e : table) {
+    const cv::Rect r = rect_of(things[e.index]);
+    if (!r.empty()) add_outlines(instance(r) == int(e.index), r.tl(), names[e.class_id], outlines);
+  }
+  std::stable_sort(outlines.begin(), outlines.end(), [](const Outline& a, const Outline& b) { return a.area > b.area; });
+  nlohmann::json objects = nlohmann::json::array();
+  for (const Outline& o : outlines) {
+    nlohmann::json polygon = nlohmann::json::array();
+    for (const cv::Point& p : o.points) polygon.push_back({p.x, p.y});
+    objects.push_back({{"label", o.label}, {"polygon", polygon}});
+  }
+  return {{"imgHeight", semantic.rows}, {"imgWidth", semantic.cols}, {"objects", objects}};
+}
+
 /// Writes frame `f`'s ground truth into `gt` and places its RGB into `left`.
 void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string& city,
                       const std::filesystem::path& left, const std::filesystem::path& gt, const ExportOptions& options) {
@@ -36,9 +131,15 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
   place_file(d.file(f, "semantic", "png"), gt / (stem + "_gtFine_labelIds.png"), options);
   const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
-  const std::vector<uint16_t> ids = cityscapes_ids(read_instance_table(d.file(f, "instance", "json")),
-                                                   d.file(f, "instance", "json"));
+  const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
+  const std::vector<uint16_t> ids = cityscapes_ids(table, d.file(f, "instance", "json"));
   const int w = semantic.cols, h = semantic.rows;
+  const std::array<uint8_t, 256> train = train_ids(d.ontology);
+  std::vector<uint8_t> train_pixels(size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) train_pixels[size_t(y) * w + x] = train[semantic.at<uint8_t>(y, x)];
+  write_file_atomic(gt / (stem + "_gtFine_labelTrainIds.png"), encode_png_grey8(train_pixels, w, h));
+  write_json(gt / (stem + "_gtFine_polygons.json"), polygons_json(d.ontology, semantic, instance, table));
   std::vector<uint16_t> out(size_t(w) * h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -66,11 +167,15 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
 void export_cityscapes(const Dataset& d, const std::filesystem::path& out, const ExportOptions& options) {
   for (const char* type : {"rgb", "semantic", "instance"}) d.require(type, "cityscapes");
   const std::string city = seed_folder_name(d.seed);
-  const std::filesystem::path left = out / "leftImg8bit" / "train" / city, gt = out / "gtFine" / "train" / city;
+  const std::string& split = options.cityscapes_split;
+  if (split != "train" && split != "val" && split != "test")
+    throw InputError("--split: unknown split '" + split + "' (allowed: train, val, test)");
+  const std::filesystem::path left = out / "leftImg8bit" / split / city, gt = out / "gtFine" / split / city;
   create_folder(left);
   create_folder(gt);
   for_each_frame(d, [&](size_t i) { cityscapes_frame(d, d.frames[i], city, left, gt, options); });
   write_file_atomic(out / "ontology.json", ontology_json(d.ontology));
+  write_json(out / "label_train_ids.json", train_ids_json(d.ontology));
 }
 
 }  // namespace silva::io

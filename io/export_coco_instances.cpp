@@ -10,7 +10,7 @@ namespace {
 
 /// The annotations of frame `f` (ids assigned later); instances under options.min_instance_area pixels are crowds.
 std::vector<nlohmann::json> instance_annotations(const Dataset& d, const DatasetFrame& f, const ExportOptions& options,
-                                                 nlohmann::json& image) {
+                                                 const std::string& image_name, nlohmann::json& image) {
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
   const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
   const int n = int(table.size());
@@ -34,7 +34,7 @@ std::vector<nlohmann::json> instance_annotations(const Dataset& d, const Dataset
                                              {"counts", rle_string(runs[e.index - 1u])}}},
                            {"instance_id", e.instance_id}});
   }
-  image = coco_image_entry(f, instance.cols, instance.rows);
+  image = coco_image_entry(f, image_name, instance.cols, instance.rows);
   return annotations;
 }
 
@@ -47,8 +47,8 @@ void export_coco_instances(const Dataset& d, const std::filesystem::path& out, c
   std::vector<std::vector<nlohmann::json>> per_frame(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
-    place_file(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"), options);
-    per_frame[i] = instance_annotations(d, f, options, images[i]);
+    const std::string image_name = place_coco_image(d, f, out / "images", options);
+    per_frame[i] = instance_annotations(d, f, options, image_name, images[i]);
   });
   nlohmann::json annotations = nlohmann::json::array();
   for (auto& frame : per_frame)

@@ -14,7 +14,7 @@ namespace {
 
 /// Writes frame `f`'s panoptic PNG and returns its annotation.
 nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& out,
-                              const ExportOptions& options, nlohmann::json& image) {
+                              const ExportOptions& options, const std::string& image_name, nlohmann::json& image) {
   const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
   const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
   const uint8_t void_id = d.ontology.id(Role::Background);
@@ -47,7 +47,7 @@ nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std
     infos.push_back({{"id", id}, {"category_id", c}, {"iscrowd", crowd ? 1 : 0},
                      {"bbox", s.bbox()}, {"area", s.area}});
   }
-  image = coco_image_entry(f, w, h);
+  image = coco_image_entry(f, image_name, w, h);
   return {{"image_id", f.global_index}, {"file_name", f.stem() + ".png"}, {"segments_info", infos}};
 }
 
@@ -60,8 +60,8 @@ void export_coco_panoptic(const Dataset& d, const std::filesystem::path& out, co
   std::vector<nlohmann::json> images(d.frames.size()), annotations(d.frames.size());
   for_each_frame(d, [&](size_t i) {
     const DatasetFrame& f = d.frames[i];
-    place_file(d.file(f, "rgb", "png"), out / "images" / (f.stem() + ".png"), options);
-    annotations[i] = panoptic_frame(d, f, out, options, images[i]);
+    const std::string image_name = place_coco_image(d, f, out / "images", options);
+    annotations[i] = panoptic_frame(d, f, out, options, image_name, images[i]);
   });
   write_json(out / "panoptic.json", {{"info", coco_info(d)},
                                      {"images", images},

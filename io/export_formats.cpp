@@ -1,6 +1,9 @@
 #include "io/export_formats.hpp"
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace silva::io {
 
@@ -26,6 +29,21 @@ void place_file(const std::filesystem::path& from, const std::filesystem::path& 
   std::error_code ec;
   std::filesystem::copy_file(from, to, ec);
   if (ec) throw IoError("cannot copy " + from.string() + " to " + to.string() + ": " + ec.message());
+}
+
+std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, const std::filesystem::path& images,
+                             const ExportOptions& options) {
+  const std::filesystem::path source = dataset.file(f, "rgb", "png");
+  if (!options.jpeg_images) {
+    place_file(source, images / (f.stem() + ".png"), options);
+    return f.stem() + ".png";
+  }
+  const cv::Mat rgb = read_image(source, CV_8UC3);
+  std::vector<uint8_t> jpeg;
+  if (!cv::imencode(".jpg", rgb, jpeg, {cv::IMWRITE_JPEG_QUALITY, ExportOptions::kJpegQuality}))
+    throw IoError("cannot encode " + source.string() + " as JPEG");
+  write_file_atomic(images / (f.stem() + ".jpg"), jpeg);
+  return f.stem() + ".jpg";
 }
 
 void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out,

@@ -32,7 +32,19 @@ struct ExportOptions {
   int64_t min_instance_area = kDefaultMinInstanceArea;
   /// The default min_instance_area (pixels): below a 4 x 4 patch.
   static constexpr int64_t kDefaultMinInstanceArea = 16;
+  /// The COCO exports' images as JPEG (quality kJpegQuality, written as images/<stem>.jpg, as detectron2's COCO
+  /// panoptic loader looks for them) instead of the dataset's PNGs.
+  bool jpeg_images = false;
+  /// JPEG quality of jpeg_images.
+  static constexpr int kJpegQuality = 95;
+  /// The Cityscapes split folder the frames go into: "train", "val" or "test".
+  std::string cityscapes_split = "train";
 };
+
+/// Places frame `f`'s RGB image into `images` as the COCO exports name it (<stem>.png, or <stem>.jpg with
+/// options.jpeg_images) and returns that file name.
+std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, const std::filesystem::path& images,
+                             const ExportOptions& options);
 
 /// Places the dataset file `from` at `to`: a hard link (a copy across file systems), or a copy with
 /// options.copy_files. IoError when neither can be made.

@@ -104,6 +104,28 @@ def check_coco_panoptic():
         assert os.path.samefile(os.path.join(out, "images", img["file_name"]), source(sequence, frame, "rgb", "png"))
     assert 0 < crowds < segments, (crowds, segments)
     print(f"coco-panoptic: {segments} segments in {len(frames())} frames equal the source labels; {crowds} crowds")
+    check_panoptic_for_detectron2()
+
+
+def check_panoptic_for_detectron2():
+    """--image-format jpg: the files detectron2's load_coco_panoptic_json opens (image = image_dir /
+    <annotation file_name's stem>.jpg, label = gt_dir / file_name; re-implemented from its documented behaviour)."""
+    target = os.path.join(WORK, "panoptic-jpg")
+    shutil.rmtree(target, ignore_errors=True)
+    silva("export", DATASET, "--format", "coco-panoptic", "--out", target, "--image-format", "jpg", "--quiet")
+    out = os.path.join(target, "coco-panoptic")
+    doc = json.load(open(os.path.join(out, "panoptic.json")))
+    cats = {c["id"] for c in doc["categories"]}
+    for (sequence, frame), ann, img in zip(frames(), doc["annotations"], doc["images"]):
+        image_file = os.path.join(out, "images", os.path.splitext(ann["file_name"])[0] + ".jpg")
+        assert img["file_name"] == os.path.basename(image_file)
+        jpeg = cv2.imread(image_file)
+        png = read(source(sequence, frame, "rgb", "png"))
+        assert jpeg is not None and jpeg.shape == png.shape, image_file
+        mse = np.mean((jpeg.astype(np.float64) - png.astype(np.float64)) ** 2)
+        assert 10 * np.log10(255 ** 2 / max(mse, 1e-12)) > 30, f"{image_file}: JPEG too far from the PNG"
+        assert os.path.isfile(os.path.join(out, "panoptic", ann["file_name"]))
+        assert all(s["category_id"] in cats for s in ann["segments_info"])
 
 
 def rle_decode(counts, h, w):
@@ -202,7 +224,49 @@ def check_cityscapes():
                                                   cv2.COLOR_BGR2RGB))
         assert os.path.isfile(os.path.join(out, "leftImg8bit", "train", city,
                                            f"{city}_{sequence}_{frame:06d}_leftImg8bit.png"))
-    print(f"cityscapes: {len(frames())} frames, labelIds and instanceIds (class*1000+k) equal the source labels")
+    check_cityscapes_loaders(out, city)
+    print(f"cityscapes: {len(frames())} frames, labelIds and instanceIds (class*1000+k) equal the source labels; "
+          "labelTrainIds and polygons.json as detectron2's semantic loader reads them")
+
+
+def check_cityscapes_loaders(out, city):
+    """labelTrainIds (label_train_ids.json's mapping), polygons.json, and the files detectron2's
+    load_cityscapes_semantic derives from each leftImg8bit name (re-implemented from its documented behaviour)."""
+    ontology = json.load(open(os.path.join(DATASET, "ontology.json")))["classes"]
+    background = next(c["id"] for c in ontology if c["role"] == "background")
+    ids = sorted({c["id"] for c in ontology} - {background})
+    want = {i: t for t, i in enumerate(ids)}
+    mapping = json.load(open(os.path.join(out, "label_train_ids.json")))
+    assert mapping["ignore_train_id"] == 255
+    assert {c["id"]: c["train_id"] for c in mapping["classes"]} == {**want, background: 255}
+    lut = np.full(256, 255, dtype=np.int64)
+    for i, t in want.items():
+        lut[i] = t
+    names = {c["id"]: c["name"] for c in ontology}
+    left_dir = os.path.join(out, "leftImg8bit", "train", city)
+    images = sorted(os.listdir(left_dir))
+    assert len(images) == len(frames())
+    for basename in images:  # detectron2: cityscapes.py load_cityscapes_semantic
+        gt = os.path.join(out, "gtFine", "train", city, basename.replace("leftImg8bit.png", "gtFine_labelTrainIds.png"))
+        polygons = json.load(open(gt.replace("labelTrainIds.png", "polygons.json")))
+        train = read(gt).astype(np.int64)
+        labels = read(gt.replace("labelTrainIds", "labelIds")).astype(np.int64)
+        assert np.array_equal(train, lut[labels]), f"{basename}: labelTrainIds is not the mapping"
+        assert (polygons["imgHeight"], polygons["imgWidth"]) == train.shape
+        # The outlines drawn in order (larger first) cover what the labels say, up to the outline pixels.
+        drawn = np.full(train.shape, 254, dtype=np.uint8)  # a value no class has: undrawn pixels disagree
+        for obj in polygons["objects"]:
+            assert obj["label"] in names.values() and len(obj["polygon"]) >= 1
+            cls = next(i for i, n in names.items() if n == obj["label"])
+            cv2.fillPoly(drawn, [np.array(obj["polygon"], dtype=np.int32)], int(lut[cls]))
+        agree = np.mean(drawn == train)
+        assert agree > 0.95, f"{basename}: polygons agree with labelTrainIds on {agree:.3f} of the pixels"
+    # --split val: the same files under val/.
+    target = os.path.join(WORK, "cityscapes-val")
+    shutil.rmtree(target, ignore_errors=True)
+    silva("export", DATASET, "--format", "cityscapes", "--out", target, "--split", "val", "--quiet")
+    assert sorted(os.listdir(os.path.join(target, "cityscapes", "leftImg8bit", "val", city))) == images
+    assert not os.path.exists(os.path.join(target, "cityscapes", "leftImg8bit", "train"))
 
 
 def quaternion_to_matrix(w, x, y, z):

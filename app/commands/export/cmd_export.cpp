@@ -17,6 +17,8 @@ struct ExportArgs {
   bool overwrite = false;
   bool copy = false;
   int64_t min_area = io::ExportOptions::kDefaultMinInstanceArea;
+  std::string image_format = "png";
+  std::string split = "train";
   int threads = 0;
   OutputFlags output;
 };
@@ -36,6 +38,8 @@ int export_command(const ExportArgs& args) {
   request.overwrite = args.overwrite;
   request.options.copy_files = args.copy;
   request.options.min_instance_area = args.min_area;
+  request.options.jpeg_images = args.image_format == "jpg";
+  request.options.cityscapes_split = args.split;
   const ThreadLimit limit(args.threads);
   return run_export(request, reporter);
 }
@@ -68,11 +72,24 @@ Handler add_export_command(CLI::App& root) {
       ->check(CLI::Range(int64_t(0), int64_t(1) << 30))
       ->default_val(io::ExportOptions::kDefaultMinInstanceArea)
       ->type_name("PIXELS");
+  cmd->add_option("--image-format", args->image_format,
+                  "the COCO exports' images: png (the dataset's, linked) or jpg (JPEG quality 95, images/<stem>.jpg, "
+                  "as detectron2's COCO panoptic loader looks for them)")
+      ->check(CLI::IsMember({"png", "jpg"}))
+      ->default_val("png")
+      ->type_name("FORMAT");
+  cmd->add_option("--split", args->split,
+                  "the Cityscapes split folder the frames go into (export a separate seed as val or test)")
+      ->check(CLI::IsMember({"train", "val", "test"}))
+      ->default_val("train")
+      ->type_name("SPLIT");
   add_threads_option(*cmd, args->threads);
   add_output_flags(*cmd, args->output);
   cmd->footer("Examples:\n  silva export out/1234567890 --format coco-panoptic\n"
               "  silva export out/1234567890 --format all --out exports --overwrite\n"
-              "  silva export out/1234567890 --format colmap --copy");
+              "  silva export out/1234567890 --format colmap --copy\n"
+              "  silva export out/1234567890 --format coco-panoptic --image-format jpg   # for detectron2\n"
+              "  silva export out/987 --format cityscapes --split val");
   return [args] { return export_command(*args); };
 }
 
