@@ -6,6 +6,7 @@
 /// copied with ExportOptions::copy_files.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,10 +15,10 @@
 namespace silva::io {
 
 /// An export format.
-enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti };
+enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti, Rosbag2 };
 
 /// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio,
-/// semantickitti.
+/// semantickitti, rosbag2.
 const std::vector<std::string>& export_format_names();
 
 /// The name of `format`.
@@ -39,7 +40,12 @@ struct ExportOptions {
   static constexpr int kJpegQuality = 95;
   /// The Cityscapes split folder the frames go into: "train", "val" or "test".
   std::string cityscapes_split = "train";
+  /// Called with (frames done, frames in all) as a streaming export (rosbag2) completes each frame; may be empty.
+  std::function<void(size_t, size_t)> progress;
 };
+
+/// The stamp step of the rosbag2 export's still captures: frame n of a sequence is stamped n x 0.1 s.
+inline constexpr uint64_t kRosbagFramePeriodNs = 100'000'000;
 
 /// Places frame `f`'s RGB image into `images` as the COCO exports name it (<stem>.png, or <stem>.jpg with
 /// options.jpeg_images) and returns that file name.
@@ -71,5 +77,8 @@ void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out,
 /// SemanticKITTI (LiDAR): sequences/NN/{velodyne,labels,image_2}/, calib.txt, poses.txt, times.txt and
 /// semantic-kitti.yaml, the label map.
 void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
+/// ROS 2 bags: per sequence a folder <sequence>/ with <sequence>_0.mcap (CDR messages, ros2msg schemas) and
+/// metadata.yaml, so `ros2 bag play <out>/<sequence>` replays it; streamed frame by frame.
+void export_rosbag2(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 
 }  // namespace silva::io

@@ -44,11 +44,18 @@ std::string read_records(const std::filesystem::path& path, size_t record, const
 
 }  // namespace
 
-std::vector<Vec3f> read_kitti_scan(const std::filesystem::path& path) {
+std::vector<std::array<float, 4>> read_kitti_scan_xyzi(const std::filesystem::path& path) {
   size_t n = 0;
   const std::string bytes = read_records(path, 16, "KITTI scan", n);
-  std::vector<Vec3f> points(n);
-  for (size_t i = 0; i < n; ++i) std::memcpy(points[i].data(), bytes.data() + 16 * i, 12);
+  std::vector<std::array<float, 4>> points(n);
+  if (n > 0) std::memcpy(points.data(), bytes.data(), 16 * n);
+  return points;
+}
+
+std::vector<Vec3f> read_kitti_scan(const std::filesystem::path& path) {
+  const std::vector<std::array<float, 4>> xyzi = read_kitti_scan_xyzi(path);
+  std::vector<Vec3f> points(xyzi.size());
+  for (size_t i = 0; i < xyzi.size(); ++i) points[i] = Vec3f(xyzi[i][0], xyzi[i][1], xyzi[i][2]);
   return points;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file LiDAR files in the KITTI / SemanticKITTI layouts (CONTRACT.md "LiDAR"): scans, labels with
 /// their instance table, and a sequence's calib.txt and poses.txt.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -16,8 +17,11 @@ namespace silva::io {
 /// A KITTI velodyne scan: per point float32 x, y, z, intensity, little-endian, no header.
 std::vector<uint8_t> kitti_scan(std::span<const LidarPoint> points);
 
-/// Reads a KITTI scan file: the points' x, y, z (sensor frame; intensities dropped). InputError naming
-/// the file when it is missing, unreadable, too large or not a whole number of 16-byte points.
+/// Reads a KITTI scan file: per point x, y, z (sensor frame) and intensity. InputError naming the file when it
+/// is missing, unreadable, too large or not a whole number of 16-byte points.
+std::vector<std::array<float, 4>> read_kitti_scan_xyzi(const std::filesystem::path& path);
+
+/// The x, y, z of read_kitti_scan_xyzi (intensities dropped); errors as that.
 std::vector<Vec3f> read_kitti_scan(const std::filesystem::path& path);
 
 /// Reads a SemanticKITTI .label file: one uint32 per point. InputError as read_kitti_scan.

@@ -10,7 +10,9 @@
 #   --fuzz   also clang and libFuzzer, for `make fuzz`
 #   --list   print the packages of the chosen options, one a line, and install nothing
 # ccache is optional (CMake uses it when present) and git only names the revision; neither is listed.
-# chromium is only for the browser test of `silva view` (headless, driven over its DevTools pipe).
+# chromium is only for the browser test of `silva view` (headless, driven over its DevTools pipe); node and npm
+# only for the rosbag2 test's independent bag readers, which --test installs into tests/node/ (npm ci, pinned by
+# its package-lock.json).
 set -euo pipefail
 
 # The toolchain and the -dev libraries the silva CLI links (CMakeLists.txt).
@@ -27,7 +29,7 @@ RUN_PKGS=(
 TEST_PKGS=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-opencv python3-yaml
-  chromium
+  chromium nodejs
 )
 BENCH_PKGS=(
   libbenchmark-dev
@@ -39,9 +41,12 @@ FUZZ_PKGS=(clang-14 libfuzzer-14-dev)
 
 PKGS=("${RUN_PKGS[@]}")
 list=0
+test=0
 for arg in "$@"; do
   case "$arg" in
-    --test) PKGS+=("${TEST_PKGS[@]}") ;;
+    --test) PKGS+=("${TEST_PKGS[@]}"); test=1
+            # Debian's npm, unless an npm is already there (a nodejs build that ships its own conflicts with it).
+            command -v npm >/dev/null || PKGS+=(npm) ;;
     --bench) PKGS+=("${BENCH_PKGS[@]}") ;;
     --tidy) PKGS+=("${TIDY_PKGS[@]}") ;;
     --fuzz) PKGS+=("${FUZZ_PKGS[@]}") ;;
@@ -71,18 +76,27 @@ missing=()
 for p in "${PKGS[@]}"; do
   [ "${state[$p]:-}" = installed ] || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
 
-echo "install-deps: installing ${missing[*]}" >&2
-SUDO=()
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: run as root (or install sudo) to install: ${missing[*]}" >&2; exit 1; }
-  SUDO=(sudo)
+  echo "install-deps: installing ${missing[*]}" >&2
+  SUDO=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "install-deps: run as root (or install sudo) to install: ${missing[*]}" >&2; exit 1; }
+    SUDO=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  install=("${SUDO[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}")
+  # Try the current package lists first (works offline from the apt cache); refresh them on failure.
+  if ! "${install[@]}"; then
+    "${SUDO[@]}" apt-get update -q
+    "${install[@]}"
+  fi
 fi
-export DEBIAN_FRONTEND=noninteractive
-install=("${SUDO[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}")
-# Try the current package lists first (works offline from the apt cache); refresh them on failure.
-if ! "${install[@]}"; then
-  "${SUDO[@]}" apt-get update -q
-  "${install[@]}"
+
+# The rosbag2 test's bag readers (tests/node/package.json), from the npm registry; skipped when installed.
+if [ $test -eq 1 ]; then
+  node_dir="$(cd "$(dirname "$0")/.." && pwd)/tests/node"
+  if [ ! -f "$node_dir/node_modules/.package-lock.json" ] || ! cmp -s "$node_dir/package-lock.json" "$node_dir/node_modules/.silva-lock"; then
+    (cd "$node_dir" && npm ci --no-audit --no-fund --loglevel=error && cp package-lock.json node_modules/.silva-lock)
+  fi
 fi

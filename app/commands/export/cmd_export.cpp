@@ -51,12 +51,14 @@ Handler add_export_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "export",
       "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap, "
-      "nerfstudio or semantickitti (LiDAR), each into <out>/<format>/; the dataset's images and scans are "
-      "hard-linked (editing one in place edits the dataset too) unless --copy.");
+      "nerfstudio, semantickitti (LiDAR) or rosbag2 (a ROS 2 bag per sequence, MCAP), each into "
+      "<out>/<format>/; the dataset's images and scans are hard-linked (editing one in place edits the dataset "
+      "too) unless --copy.");
   cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
   cmd->add_option("--format", args->formats,
-                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, or all (every "
-                  "camera format, and semantickitti when the dataset has lidar; several: comma-separated)")
+                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, rosbag2, or all "
+                  "(every camera format and rosbag2, and semantickitti when the dataset has lidar; several: "
+                  "comma-separated)")
       ->required()
       ->delimiter(',')
       ->type_name("F");
@@ -89,7 +91,8 @@ Handler add_export_command(CLI::App& root) {
               "  silva export out/1234567890 --format all --out exports --overwrite\n"
               "  silva export out/1234567890 --format colmap --copy\n"
               "  silva export out/1234567890 --format coco-panoptic --image-format jpg   # for detectron2\n"
-              "  silva export out/987 --format cityscapes --split val");
+              "  silva export out/987 --format cityscapes --split val\n"
+              "  silva export out/1234567890 --format rosbag2 && ros2 bag play out/1234567890/export/rosbag2/autopilot");
   return [args] { return export_command(*args); };
 }
 

@@ -23,6 +23,11 @@ struct ExportRequest {
 /// Exports a finished dataset; returns the exit code. Throws InputError / IoError.
 int run_export(const ExportRequest& request, const Reporter& reporter);
 
+/// InputError when a format's folder <out_dir>/<format>/ would hold the dataset `run_dir` (replacing it would
+/// delete the source) or lie inside the dataset anywhere but below <run_dir>/export/.
+void check_export_location(const std::filesystem::path& run_dir, const std::filesystem::path& out_dir,
+                           const std::vector<io::ExportFormat>& formats);
+
 /// Writes `formats` of `dataset` into <out_dir>/<format>/ (each moved into place when complete) and returns
 /// [{"format", "dir", "seconds"}, ...]. An existing non-empty target without `overwrite` is InputError,
 /// checked for every format before any is written.

@@ -2,9 +2,11 @@
 // into place only when complete, so an interrupted or failed export never replaces a good one.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <system_error>
 
 #include "app/commands/export/export_command.hpp"
+#include "pipeline/console/progress.hpp"
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 
@@ -27,7 +29,28 @@ void remove_folder(const fs::path& dir) {
   if (ec) throw IoError("cannot remove " + dir.string() + ": " + ec.message());
 }
 
+/// True when `inner` is `outer` or lies below it (both made absolute, links resolved where they exist).
+bool within(const fs::path& inner, const fs::path& outer) {
+  const fs::path a = fs::weakly_canonical(fs::absolute(inner)), b = fs::weakly_canonical(fs::absolute(outer));
+  auto i = a.begin();
+  for (auto o = b.begin(); o != b.end(); ++o, ++i)
+    if (i == a.end() || *i != *o) return false;
+  return true;
+}
+
 }  // namespace
+
+void check_export_location(const fs::path& run_dir, const fs::path& out_dir, const std::vector<io::ExportFormat>& formats) {
+  for (io::ExportFormat format : formats) {
+    const fs::path target = out_dir / io::export_format_name(format);
+    if (within(run_dir, target))
+      throw InputError(target.string() + ": the export would replace the dataset " + run_dir.string() +
+                       " it reads; choose an --out outside it");
+    if (within(target, run_dir) && !within(target, run_dir / "export"))
+      throw InputError(out_dir.string() + ": inside the dataset " + run_dir.string() +
+                       "; exports go to " + (run_dir / "export").string() + " or outside the dataset");
+  }
+}
 
 nlohmann::json export_formats(const io::Dataset& dataset, const std::vector<io::ExportFormat>& formats,
                               const fs::path& out_dir, bool overwrite, const io::ExportOptions& options) {
@@ -62,8 +85,16 @@ int run_export(const ExportRequest& request, const Reporter& reporter) {
       if (format == io::ExportFormat::SemanticKitti && !dataset.has("lidar")) continue;
       if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
     }
+  check_export_location(request.run_dir, request.out_dir, formats);
   const Stopwatch clock;
-  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite, request.options);
+  io::ExportOptions options = request.options;
+  std::optional<Progress> progress;
+  options.progress = [&](size_t done, size_t total) {
+    if (!progress) progress.emplace(reporter, int(total), "frames");
+    progress->update(int(done));
+  };
+  const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite, options);
+  if (progress) progress->finish();
   std::string line;
   for (const auto& w : written) {
     char buf[64];
