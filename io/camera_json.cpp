@@ -1,8 +1,11 @@
 #include "io/camera_json.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/camera_model_json.hpp"
 #include "io/json_read.hpp"
 
@@ -72,6 +75,38 @@ std::string camera_json(const CameraRecord& r) {
   return j.dump(2) + "\n";
 }
 
+namespace {
+
+/// InputError naming `source` and `key` unless `ok`.
+void require(bool ok, const std::string& source, const std::string& key, const std::string& what) {
+  if (!ok) throw InputError(source + ": '" + key + "' " + what);
+}
+
+/// The contract's camera: K = [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] with finite fx, fy > 0 and the principal point
+/// within an image size of the image; camera_to_world a rigid transform (rotation within 1e-5, last row 0 0 0 1)
+/// inside the pose file's world limits; 0 < near < far, finite. Readers project with these, so a damaged file must
+/// stop here rather than in a ray caster's assertion or an overflow.
+void check_camera(const Camera& c, const std::vector<std::vector<double>>& k, const std::string& source) {
+  require(k[0][1] == 0 && k[1][0] == 0 && k[2][0] == 0 && k[2][1] == 0 && k[2][2] == 1, source, "K",
+          "must be [[fx, 0, cx], [0, fy, cy], [0, 0, 1]]");
+  require(std::isfinite(c.fx) && std::isfinite(c.fy) && c.fx >= 1e-3 && c.fy >= 1e-3 && c.fx <= 1e7 && c.fy <= 1e7,
+          source, "K", "needs focal lengths fx, fy in 0.001 ... 1e7 pixels");
+  require(std::abs(c.cx - 0.5 * c.width) <= 1.5 * c.width && std::abs(c.cy - 0.5 * c.height) <= 1.5 * c.height,
+          source, "K", "needs the principal point (cx, cy) within one image size of the image");
+  const Mat4d& m = c.camera_to_world;
+  require(m.allFinite() && m(3, 0) == 0 && m(3, 1) == 0 && m(3, 2) == 0 && m(3, 3) == 1, source, "camera_to_world",
+          "must be a finite rigid transform with last row 0 0 0 1");
+  const Mat3d r = m.block<3, 3>(0, 0);
+  require((r.transpose() * r - Mat3d::Identity()).cwiseAbs().maxCoeff() <= 1e-5 && r.determinant() > 0, source,
+          "camera_to_world", "needs a rotation (|R^T R - I| <= 1e-5, det +1) in its upper-left 3x3");
+  require(std::max(std::abs(m(0, 3)), std::abs(m(1, 3))) <= limits::kMaxPoseCoordinate && std::abs(m(2, 3)) <= limits::kMaxPoseHeight,
+          source, "camera_to_world", "puts the camera outside the world (|x|, |y| <= 100000 m, |z| <= 10000 m)");
+  require(std::isfinite(c.near) && std::isfinite(c.far) && c.near > 0 && c.far > c.near, source, "near",
+          "and 'far' need 0 < near < far, finite");
+}
+
+}  // namespace
+
 CameraRecord parse_camera_json(const std::string& text, const std::string& source) {
   const nlohmann::json j = parse_json_text(text, source);
   CameraRecord r;
@@ -82,8 +117,8 @@ CameraRecord parse_camera_json(const std::string& text, const std::string& sourc
     throw InputError(source + ": 'perspective' must be \"ground\" or \"aerial\", got \"" + perspective + "\"");
   r.perspective = perspective == "aerial" ? Perspective::Aerial : Perspective::Ground;
   Camera& c = r.camera;
-  c.width = int(json_int(j, "width", 1, 1 << 20, source));
-  c.height = int(json_int(j, "height", 1, 1 << 20, source));
+  c.width = int(json_int(j, "width", 1, 8192, source));
+  c.height = int(json_int(j, "height", 1, 8192, source));
   const auto k = json_matrix(j, "K", 3, 3, source);
   c.fx = k[0][0];
   c.fy = k[1][1];
@@ -92,6 +127,7 @@ CameraRecord parse_camera_json(const std::string& text, const std::string& sourc
   c.camera_to_world = read_matrix4(j, "camera_to_world", source);
   c.near = json_number(j, "near", source);
   c.far = json_number(j, "far", source);
+  check_camera(c, k, source);
   r.yaw_deg = json_number(j, "yaw_deg", source);
   r.pitch_deg = json_number(j, "pitch_deg", source);
   r.roll_deg = json_number(j, "roll_deg", source);

@@ -60,7 +60,13 @@ Dataset open_dataset(const fs::path& dir) {
     const nlohmann::json& counts = d.manifest.at("frames");
     int global = 0;
     for (const std::string& s : sequences) {
-      const int n = counts.contains(s) ? counts.at(s).get<int>() : 0;
+      const int n = counts.contains(s) ? int(json_int(counts, s, 0, limits::kMaxFramesPerSequence, where + ": frames"))
+                                       : 0;
+      // The count is only trusted as far as the files go: its last camera file must be there.
+      const fs::path last = dir / s / frame_file("camera", n - 1, "json");
+      if (n > 0 && !fs::is_regular_file(last, ec))
+        throw InputError(where + ": frames." + s + " = " + std::to_string(n) + ", but " + last.string() +
+                         " is missing (a damaged or unfinished dataset)");
       for (int f = 0; f < n; ++f) d.frames.push_back({s, f, global++});
     }
   } catch (const nlohmann::json::exception& e) {

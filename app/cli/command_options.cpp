@@ -1,5 +1,8 @@
 #include "app/cli/command_options.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include <tbb/info.h>
 
 #include "io/run_folder.hpp"
@@ -55,6 +58,19 @@ ThreadLimit::ThreadLimit(int threads) {
     control_ = std::make_unique<tbb::global_control>(
         tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
   }
+}
+
+CLI::Validator finite_range(double lo, double hi) {
+  std::ostringstream range;
+  range << "[" << lo << " - " << hi << "]";
+  return CLI::Validator(
+      [lo, hi, bounds = range.str()](std::string& text) -> std::string {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || v < lo || v > hi)
+          return "Value " + text + " not a finite number in " + bounds;
+        return {};
+      },
+      "FLOAT in " + range.str());
 }
 
 }  // namespace silva::app

@@ -28,6 +28,9 @@ LoadedConfig load_run_config(const ConfigSources& sources, const Reporter& repor
 /// The thread count a run uses: `requested`, or all cores when 0.
 int resolved_threads(int requested);
 
+/// A CLI check for a real-valued option: a finite number in [lo, hi] (CLI::Range lets nan through).
+CLI::Validator finite_range(double lo, double hi);
+
 /// Limits TBB to `threads` worker threads (0 = all cores) while it lives.
 class ThreadLimit {
  public:

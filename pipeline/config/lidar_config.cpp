@@ -11,6 +11,9 @@ namespace silva::pipeline {
 
 namespace {
 
+/// Most beams a preset may have (channels, or entries of elevations_deg).
+constexpr int kMaxChannels = 1024;
+
 /// The keys a preset table may hold.
 constexpr const char* kKeys[] = {"channels",  "elevation_min_deg", "elevation_max_deg", "elevations_deg",
                                  "columns",   "rotation_hz",       "min_range",         "max_range",
@@ -57,13 +60,14 @@ void overlay(raycast::LidarPreset& p, const toml::table& table, const std::strin
     const std::string key = prefix + std::string(k.str());
     const std::string at = where(file, node);
     const std::string_view field = k.str();
-    if (field == "channels") channels = whole(node, key, at, 1, 1024);
+    if (field == "channels") channels = whole(node, key, at, 1, kMaxChannels);
     else if (field == "elevation_min_deg") lo = number(node, key, at, -90, 90);
     else if (field == "elevation_max_deg") hi = number(node, key, at, -90, 90);
     else if (field == "elevations_deg") {
       const toml::array* arr = node.as_array();
-      if (!arr || arr->empty())
-        throw InputError(at + ": " + key + " must be a non-empty array of degrees, got " + describe_node(node));
+      if (!arr || arr->empty() || arr->size() > size_t(kMaxChannels))
+        throw InputError(at + ": " + key + " must be an array of 1 to " + std::to_string(kMaxChannels) +
+                         " elevations in degrees, got " + (arr ? std::to_string(arr->size()) + " entries" : describe_node(node)));
       p.elevations_deg.clear();
       for (const toml::node& e : *arr) p.elevations_deg.push_back(number(e, key, where(file, e), -90, 90));
       if (!std::is_sorted(p.elevations_deg.begin(), p.elevations_deg.end()))

@@ -76,6 +76,9 @@ TEST(LidarConfig, MalformedTablesAreOneClearLine) {
   EXPECT_NE(error_of("[lidar.presets.x]\ndropout = 2\n").find("lidar.presets.x.dropout = 2 is out of range, allowed 0 .. 0.99"),
             std::string::npos);
   EXPECT_NE(error_of("[lidar.presets.x]\nelevations_deg = [1, -1]\n").find("must be ascending"), std::string::npos);
+  std::string beams = "[lidar.presets.x]\nelevations_deg = [";  // 1 025 beams: one over the channels limit
+  for (int i = 0; i <= 1024; ++i) beams += (i ? ", " : "") + std::to_string(-60.0 + i * 0.1);
+  EXPECT_NE(error_of(beams + "]\n").find("1 to 1024 elevations"), std::string::npos);
   EXPECT_NE(error_of("[lidar.presets.x]\nelevations_deg = [-1, 1]\nchannels = 3\n").find("lists 2 beams"),
             std::string::npos);
   EXPECT_NE(error_of("[lidar.presets.x]\nchannels = 8\n").find("needs channels, elevation_min_deg and elevation_max_deg"),

@@ -128,6 +128,41 @@ TEST(CameraJson, MalformedFileIsInputErrorNamingFileAndKey) {
   EXPECT_THROW(read_camera_json("/nonexistent/silva/camera.json"), InputError);
 }
 
+/// The message parse_camera_json gives for `j` (empty when it parses).
+std::string refusal(const nlohmann::json& j) {
+  try {
+    parse_camera_json(j.dump(), "c.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CameraJson, RefusesCamerasNoReaderCanProjectWith) {
+  const auto base = nlohmann::json::parse(camera_json(sample(true)));
+  EXPECT_EQ(refusal(base), "");
+  const auto with = [&](auto edit) {
+    nlohmann::json j = base;
+    edit(j);
+    return refusal(j);
+  };
+  // Values a damaged dataset held that crashed or hung verify and card, or wrote nan into exports.
+  EXPECT_NE(with([](auto& j) { j["K"][0][0] = 0.0; }).find("'K'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["K"][1][1] = 1e-300; }).find("'K'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["K"][0][2] = 1e308; }).find("'K'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["K"][0][1] = 0.5; }).find("'K'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["camera_to_world"][0][3] = 1e19; }).find("'camera_to_world'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["camera_to_world"][0][3] = -1e300; }).find("outside the world"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["camera_to_world"][0][0] = 2.0; }).find("rotation"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["camera_to_world"][3][0] = 1.0; }).find("last row"), std::string::npos);
+  EXPECT_NE(with([](auto& j) {  // a mirror: orthonormal, determinant -1
+              for (int r = 0; r < 3; ++r) j["camera_to_world"][r][0] = -j["camera_to_world"][r][0].template get<double>();
+            }).find("rotation"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["near"] = 0.0; }).find("'near'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["far"] = 0.01; }).find("'near'"), std::string::npos);
+  EXPECT_NE(with([](auto& j) { j["width"] = 16384; }).find("width"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace silva::io
 

@@ -2,7 +2,7 @@
 """`silva export` read back by independent readers and compared pixel for pixel / pose for pose with the source.
 
 Usage: export_test.py SILVA WORKDIR TEST   (TEST: generate, coco-panoptic, coco-instances, cityscapes, colmap,
-nerfstudio, semantickitti, errors, copy). `generate` makes the small dataset the others read (a ctest fixture);
+nerfstudio, semantickitti, errors, copy, damaged). `generate` makes the small dataset the others read (a ctest fixture);
 semantickitti generates its own small dataset with LiDAR (and checks python/silva_dataset's LiDAR read-back on it).
 """
 import json
@@ -465,7 +465,8 @@ def check_semantickitti():
         assert doc["split"]["train"] == sorted(int(numbers[s]) for s in manifest["frames"])
     r = silva("export", DATASET, "--format", "all", "--out", os.path.join(work, "all"), "--json")
     assert [e["format"] for e in json.loads(r.stdout)["exports"]] == \
-        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio"], "all: semantickitti without lidar"
+        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio", "rosbag2"], \
+        "all: every camera format and rosbag2, semantickitti only with lidar"
     r = silva("export", DATASET, "--format", "semantickitti", "--out", os.path.join(work, "none"), expect=2)
     assert "needs output type 'lidar'" in r.stderr and r.stderr.count("\n") == 1, r.stderr
     r = silva("generate", "--seed", "1", "--out", os.path.join(work, "none"), "--set", 'output.formats=["semantickitti"]',
@@ -515,7 +516,48 @@ def check_copy():
     print(f"copy: {copied} images copied, none shared with the dataset")
 
 
+def check_damaged():
+    """A damaged dataset (camera files no reader can project with, manifest counts the files do not back) stops
+    export, card and verify with exit 2 and one line naming the file, where they crashed, hung or wrote nan."""
+    work = os.path.join(WORK, "damaged")
+
+    def damaged(edit):
+        copy = os.path.join(work, f"{SEED:010d}")
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
+        edit(copy)
+        return copy
+
+    def edit_json(path, change):
+        j = json.load(open(path))
+        change(j)
+        json.dump(j, open(path, "w"))
+
+    camera = lambda d: os.path.join(d, "random", "camera", "000000.json")  # noqa: E731
+    manifest = lambda d: os.path.join(d, "manifest.json")  # noqa: E731
+    cases = [
+        (lambda d: edit_json(camera(d), lambda j: j["K"][0].__setitem__(0, 0.0)), "000000.json: 'K'"),
+        (lambda d: edit_json(camera(d), lambda j: j["K"][0].__setitem__(2, 1e308)), "000000.json: 'K'"),
+        (lambda d: edit_json(camera(d), lambda j: j["camera_to_world"][0].__setitem__(3, 1e19)), "'camera_to_world'"),
+        (lambda d: edit_json(camera(d), lambda j: j["camera_to_world"][0].__setitem__(0, 3.0)), "rotation"),
+        (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", 1000000000)), "frames"),
+        (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", -1)), "frames"),
+        (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", "x")), "frames"),
+        (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", 50)), "is missing"),
+    ]
+    for edit, expected in cases:
+        d = damaged(edit)
+        for command in (["export", d, "--format", "colmap"], ["card", d], ["verify", d, "--sample", "0.01"]):
+            r = silva(*command, "--quiet", expect=2)
+            assert expected in r.stderr and r.stderr.count("\n") == 1, (command, r.stderr)
+        assert not os.path.exists(os.path.join(d, "export", "colmap")), "a refused export left files"
+    r = silva("verify", DATASET, "--sample", "nan", expect=2)
+    assert "not a finite number" in r.stderr, r.stderr
+    print(f"damaged: {len(cases)} damaged datasets x export, card, verify: exit 2, one line naming the file")
+
+
 CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,
           "cityscapes": check_cityscapes, "colmap": check_colmap, "nerfstudio": check_nerfstudio,
-          "semantickitti": check_semantickitti, "errors": check_errors, "copy": check_copy}
+          "semantickitti": check_semantickitti, "errors": check_errors, "copy": check_copy,
+          "damaged": check_damaged}
 CHECKS[TEST]()

@@ -33,19 +33,19 @@ Handler add_verify_command(CLI::App& root) {
       ->type_name("N");
   cmd->add_option("--sample", args->request.sample,
                   "share of each frame's pixels cast, seeded per pixel (default 0.25; 1 = every pixel)")
-      ->check(CLI::Range(1e-6, 1.0))
+      ->check(finite_range(1e-6, 1.0))
       ->type_name("F");
   cmd->add_option("--min-class", args->request.min_class,
                   "percent of interior pixels whose class must agree (default 99.9)")
-      ->check(CLI::Range(0.0, 100.0))
+      ->check(finite_range(0.0, 100.0))
       ->type_name("PCT");
   cmd->add_option("--min-depth", args->request.min_depth,
                   "percent of hit pixels whose depth must agree within --depth-tolerance (default 99.9)")
-      ->check(CLI::Range(0.0, 100.0))
+      ->check(finite_range(0.0, 100.0))
       ->type_name("PCT");
   cmd->add_option("--depth-tolerance", args->request.depth_tolerance,
                   "relative depth error, percent, that still agrees (default 0.1)")
-      ->check(CLI::Range(0.0, 100.0))
+      ->check(finite_range(0.0, 100.0))
       ->type_name("PCT");
   cmd->add_flag("--full-detail", args->request.full_detail,
                 "cast every instance at full detail even when the dataset was rendered with render.lod = true "
