@@ -169,12 +169,18 @@ def errors():
     os.makedirs(empty, exist_ok=True)
     r = silva("export", empty, "--format", "rosbag2", expect=2)
     assert r.stderr.count("\n") == 1 and "not a Silva dataset" in r.stderr, r.stderr
+    unfinished = os.path.join(WORK, "unfinished", f"{SEED:010d}")  # a run folder whose manifest was never written
+    shutil.rmtree(os.path.dirname(unfinished), ignore_errors=True)
+    shutil.copytree(DATASET, unfinished, ignore=shutil.ignore_patterns("manifest.json"))
+    r = silva("export", unfinished, "--format", "rosbag2", expect=2)
+    assert r.stderr.count("\n") == 1 and "not a finished Silva dataset" in r.stderr, r.stderr
+    assert not os.path.exists(os.path.join(unfinished, "export")), "a refused export left files"
     r = silva("export", DATASET, "--format", "rosbag2", "--out", os.path.join(DATASET, "random"), expect=2)
     assert "inside the dataset" in r.stderr, r.stderr
     alias = os.path.join(WORK, "alias")  # alias/rosbag2 is the dataset, reached through a link
     shutil.rmtree(alias, ignore_errors=True)
     os.makedirs(alias)
-    os.symlink(DATASET, os.path.join(alias, "rosbag2"))
+    os.symlink(os.path.abspath(DATASET), os.path.join(alias, "rosbag2"))
     r = silva("export", DATASET, "--format", "rosbag2", "--out", alias, "--overwrite", expect=2)
     assert "would replace the dataset" in r.stderr, r.stderr
     assert os.path.isfile(os.path.join(DATASET, "manifest.json")), "the refused export touched the dataset"
