@@ -2,7 +2,9 @@
 
 #include <httplib.h>
 
+#include <cstdio>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -43,10 +45,45 @@ struct Release {
   ~Release() { --counter; }
 };
 
-/// `route` behind the in-flight cap `counter` / `max_in_flight`, translated to httplib.
-httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter, int max_in_flight) {
-  return [route = std::move(route), &counter, max_in_flight](const httplib::Request& req, httplib::Response& res) {
+/// 128 random bits as 32 hex digits, from the operating system's entropy source.
+std::string random_token() {
+  std::random_device entropy;
+  std::string hex;
+  for (int i = 0; i < 4; ++i) {
+    char word[9];
+    std::snprintf(word, sizeof word, "%08x", unsigned(entropy()));
+    hex += word;
+  }
+  return hex;
+}
+
+/// Why a state-changing request is refused (empty when it may proceed): it must carry the launch token in
+/// kTokenHeader, come from the page's own origin when the browser names one, and send JSON. A web page of another
+/// origin can send none of these without a CORS preflight this server never grants.
+std::string refusal(const httplib::Request& req, const std::string& token) {
+  if (req.get_header_value(kTokenHeader) != token)
+    return "missing or wrong " + std::string(kTokenHeader) + ": use the page at the URL silva view printed";
+  const std::string origin = req.get_header_value("Origin");
+  if (!origin.empty() && origin != "http://" + req.get_header_value("Host")) return "cross-origin request refused";
+  if (req.get_header_value("Content-Type").rfind("application/json", 0) != 0) return "the body must be application/json";
+  return {};
+}
+
+/// `route` behind the in-flight cap `counter` / `max_in_flight`, translated to httplib; with a `token`, only
+/// requests that pass refusal() reach it (403 otherwise).
+httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter, int max_in_flight,
+                                         const std::string* token) {
+  return [route = std::move(route), &counter, max_in_flight, token](const httplib::Request& req,
+                                                                   httplib::Response& res) {
     set_common_headers(res);
+    if (token != nullptr) {
+      const std::string why = refusal(req, *token);
+      if (!why.empty()) {
+        res.status = 403;
+        res.set_content("{\"error\":\"" + why + "\"}", "application/json");  // why holds no quote or backslash
+        return;
+      }
+    }
     if (++counter > max_in_flight) {
       --counter;
       res.status = 503;
@@ -72,7 +109,8 @@ httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter,
 
 }  // namespace
 
-ViewServer::ViewServer(const fs::path& page_dir) : server_(std::make_unique<httplib::Server>()) {
+ViewServer::ViewServer(const fs::path& page_dir)
+    : server_(std::make_unique<httplib::Server>()), token_(random_token()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
   server_->set_read_timeout(5, 0);
   server_->set_write_timeout(5, 0);
@@ -101,11 +139,11 @@ std::atomic<int>& ViewServer::new_counter() {
 }
 
 void ViewServer::get(const std::string& path, Route route, int max_in_flight) {
-  server_->Get(path, bounded_handler(std::move(route), new_counter(), max_in_flight));
+  server_->Get(path, bounded_handler(std::move(route), new_counter(), max_in_flight, nullptr));
 }
 
 void ViewServer::post(const std::string& path, Route route, int max_in_flight) {
-  server_->Post(path, bounded_handler(std::move(route), new_counter(), max_in_flight));
+  server_->Post(path, bounded_handler(std::move(route), new_counter(), max_in_flight, &token_));
 }
 
 int ViewServer::bind(const std::string& host, int port) {

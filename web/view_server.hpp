@@ -40,6 +40,8 @@ inline constexpr const char* kPageFiles[] = {"index.html", "view.js", "view.css"
 
 /// Worker threads answering requests.
 inline constexpr int kServerThreads = 4;
+/// The header a state-changing (POST) request carries the launch token in.
+inline constexpr const char* kTokenHeader = "X-Silva-Token";
 /// Largest request body accepted, bytes.
 inline constexpr std::size_t kMaxBodyBytes = 64 * 1024;
 
@@ -54,7 +56,8 @@ class ViewServer {
 
   /// Answers GET `path` with `route`, working on at most `max_in_flight` requests at once.
   void get(const std::string& path, Route route, int max_in_flight = 2);
-  /// Answers POST `path` with `route`, working on at most `max_in_flight` requests at once.
+  /// Answers POST `path` with `route`, working on at most `max_in_flight` requests at once; only requests with
+  /// the launch token in kTokenHeader, JSON bodies and no foreign Origin reach it (403 otherwise).
   void post(const std::string& path, Route route, int max_in_flight = 2);
 
   /// Binds `host`:`port` (0 = any free port); returns the bound port. Throws std::runtime_error.
@@ -63,6 +66,8 @@ class ViewServer {
   void run();
   /// Makes run() return (from any thread).
   void stop();
+  /// This launch's random token (32 hex digits); the page URL carries it as ?token=.
+  const std::string& token() const { return token_; }
 
  private:
   /// A new in-flight counter for one route.
@@ -70,6 +75,7 @@ class ViewServer {
 
   std::unique_ptr<httplib::Server> server_;
   std::vector<std::unique_ptr<std::atomic<int>>> in_flight_;  ///< One counter per route.
+  std::string token_;                                          ///< See token().
 };
 
 }  // namespace silva::web

@@ -72,7 +72,7 @@ CostEstimate estimate_world_cost(const Config& c, std::optional<double> radius) 
   return estimate_for(c, chunks, 0);  // a world is built once: only its memory is bounded
 }
 
-void check_cost(const CostEstimate& e, bool force, const std::string& what) {
+void check_cost(const CostEstimate& e, bool force, const std::string& what, bool can_force) {
   if (force) return;
   const bool memory = e.machine_bytes > 0 && e.bytes > limits::kMaxMemoryShare * e.machine_bytes;
   const bool work = e.points_per_frame > limits::kMaxPlacementPointsPerFrame;
@@ -85,7 +85,7 @@ void check_cost(const CostEstimate& e, bool force, const std::string& what) {
                 limits::kMaxPlacementPointsPerFrame);
   throw InputError(what + ": this config needs " + numbers + (work ? points : "") +
                    "; lower camera.far, world.render_distance or terrain.chunk_size, raise terrain.vertex_spacing or "
-                   "vegetation.grid_spacing, or pass --force to run it anyway");
+                   "vegetation.grid_spacing" + (can_force ? ", or pass --force to run it anyway" : ""));
 }
 
 }  // namespace silva::pipeline

@@ -28,6 +28,6 @@ CostEstimate estimate_world_cost(const Config& config, std::optional<double> rad
 
 /// Throws InputError with the estimate when it exceeds the machine (memory above
 /// limits::kMaxMemoryShare of its RAM) or limits::kMaxPlacementPointsPerFrame, unless `force`; `what` names the command ("generate").
-void check_cost(const CostEstimate& estimate, bool force, const std::string& what);
+void check_cost(const CostEstimate& estimate, bool force, const std::string& what, bool can_force = true);
 
 }  // namespace silva::pipeline

@@ -14,6 +14,7 @@
 #include "io/png_writer.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
+#include "io/run_lock.hpp"
 #include "systems/write_dataset.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/terrain.hpp"
@@ -178,6 +179,9 @@ nlohmann::json ViewWorld::capture(const ViewPose& pose) {
   identity.config.captures.sequences.clear();
   const fs::path run_dir = io::prepare_run_folder(cfg.output.dir, cfg.seed, run_identity_hash(identity, setup_),
                                                   io::FolderMode::Resume, resumable_config_text(record));
+  // Held through the capture, so a generate, a merge or another view never writes this folder at the same time,
+  // and the pose file is read and extended by one writer at a time.
+  const io::RunLock folder_lock = io::lock_run_folder(run_dir, /*exclusive=*/true);
 
   nlohmann::json poses = fs::exists(pose_path) ? io::parse_json_text(io::read_text_file(pose_path), pose_path.string())
                                                : nlohmann::json{{"poses", nlohmann::json::array()}};

@@ -24,7 +24,7 @@ std::vector<std::string> world_args() {
 
 /// The URL `silva view` printed on stdout ("" when none came within 60 s or the process ended).
 std::string wait_for_url(const ChildProcess& view) {
-  const std::regex url(R"(http://127\.0\.0\.1:([0-9]+)/)");
+  const std::regex url(R"(http://127\.0\.0\.1:([0-9]+)/\?token=[0-9a-f]{32})");
   for (int i = 0; i < 600; ++i) {
     std::smatch m;
     const std::string out = read_file(view.out);

@@ -4,6 +4,7 @@
 #include "app/commands/view/view_explorer.hpp"
 #include "core/error.hpp"
 #include "io/pose_file.hpp"
+#include "io/run_lock.hpp"
 #include "silva_process.hpp"
 
 namespace silva::app {
@@ -44,6 +45,24 @@ TEST(ViewConfig, PageEditsGoThroughTheCliChecks) {
     EXPECT_THROW(load_view_config(sources, {std::nullopt, {key}}), InputError) << key;
 }
 
+TEST(ViewConfig, PageEditsPassTheCostGuardOfGenerateAndWorld) {
+  const fs::path dir = test::fresh_test_dir();
+  for (const char* edit : {"camera.far=1000000", "vegetation.grid_spacing=0.1", "world.extent=1000000"}) {
+    ViewEdits e;
+    e.overrides = {edit};
+    try {
+      ConfigSources defaults;  // the default config, as `silva view` starts without --config
+      defaults.seed = "21";
+      defaults.overrides = {"output.dir=" + (dir / "out").string()};
+      load_view_config(defaults, e);
+      ADD_FAILURE() << edit << " was accepted";
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find("view: this config needs"), std::string::npos) << err.what();
+      EXPECT_EQ(std::string(err.what()).find("--force"), std::string::npos) << "the page has no --force";
+    }
+  }
+}
+
 TEST(ViewWorld, EveryViewRendersAndCapturesAppendToThePoseFile) {
   const fs::path dir = test::fresh_test_dir();
   ViewWorld world(load_view_config(tiny_sources(dir / "out"), {}));
@@ -74,6 +93,14 @@ TEST(ViewWorld, EveryViewRendersAndCapturesAppendToThePoseFile) {
   for (const char* file : {"custom/semantic/000001.png", "custom/depth/000001.png", "custom/camera/000001.json",
                            "ontology.json", ".silva-run.json"})
     EXPECT_TRUE(fs::exists(run / file)) << file;
+
+  // Another process's run (here: a lock this test holds) keeps the view from writing into its folder.
+  {
+    const io::RunLock other = io::lock_run_folder(run, /*exclusive=*/true);
+    EXPECT_THROW(world.capture(pose), InputError);
+  }
+  EXPECT_EQ(io::read_pose_file(run / "poses.json").size(), 2u) << "the refused capture changed the pose file";
+  EXPECT_EQ(world.capture(pose)["frame"], 2) << "the lock is released after each capture";
 }
 
 }  // namespace

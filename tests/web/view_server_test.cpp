@@ -103,10 +103,40 @@ TEST(ViewServer, AThrowingRouteAnswers500) {
   RunningServer s(page_dir());
   s.server.post("/boom", [](const Request&) -> Reply { throw std::runtime_error("kaput"); });
   s.start();
-  const auto r = httplib::Client("127.0.0.1", s.port).Post("/boom", "{}", "application/json");
+  const auto r = httplib::Client("127.0.0.1", s.port)
+                     .Post("/boom", {{kTokenHeader, s.server.token()}}, "{}", "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 500);
   EXPECT_NE(r->body.find("kaput"), std::string::npos);
+}
+
+TEST(ViewServer, StateChangingRequestsNeedTheTokenTheSameOriginAndJson) {
+  RunningServer s(page_dir());
+  std::atomic<int> reached{0};
+  s.server.post("/config", [&](const Request&) {
+    ++reached;
+    return Reply{};
+  });
+  s.start();
+  const std::string& token = s.server.token();
+  EXPECT_EQ(token.size(), 32u);
+  EXPECT_NE(token, ViewServer(page_dir()).token());  // drawn per launch
+  httplib::Client c("127.0.0.1", s.port);
+  const std::string self = "http://127.0.0.1:" + std::to_string(s.port);
+  const auto status = [&](const httplib::Headers& headers, const std::string& type) {
+    const auto r = c.Post("/config", headers, "{\"seed\": \"1\"}", type);
+    return r ? r->status : -1;
+  };
+  // What a page of another origin can send without a preflight: no custom header, a simple content type.
+  EXPECT_EQ(status({}, "text/plain"), 403);
+  EXPECT_EQ(status({{"Origin", "http://evil.example"}}, "application/json"), 403);
+  EXPECT_EQ(status({{kTokenHeader, "0123456789abcdef0123456789abcdef"}}, "application/json"), 403);
+  EXPECT_EQ(status({{kTokenHeader, token}, {"Origin", "http://evil.example"}}, "application/json"), 403);
+  EXPECT_EQ(status({{kTokenHeader, token}}, "text/plain"), 403);
+  EXPECT_EQ(reached.load(), 0);
+  EXPECT_EQ(status({{kTokenHeader, token}}, "application/json"), 200);
+  EXPECT_EQ(status({{kTokenHeader, token}, {"Origin", self}}, "application/json; charset=utf-8"), 200);
+  EXPECT_EQ(reached.load(), 2);
 }
 
 }  // namespace

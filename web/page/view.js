@@ -13,6 +13,12 @@ const silva = window.silva = {
   lastError: '', lastCapture: null, state: null, follow: null, placed: null,
 };
 
+// The launch token silva view printed in the URL (kept for reloads of this tab): the server accepts settings
+// changes and captures only with it, so no other web page can make them.
+const token = new URLSearchParams(location.search).get('token') || sessionStorage.getItem('silva-token') || '';
+sessionStorage.setItem('silva-token', token);
+const postHeaders = { 'Content-Type': 'application/json', 'X-Silva-Token': token };
+
 const keys = new Set();
 let config = null;          // the world's config (from /state)
 let overrides = [];         // the page's own `key=value` list (free keys)
@@ -208,7 +214,7 @@ $('follow').addEventListener('click', follow);
 // ---- capture and export -----------------------------------------------------------------------
 async function capture() {
   const p = silva.pose;
-  const res = await fetch('capture', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+  const res = await fetch('capture', { method: 'POST', headers: postHeaders,
     body: JSON.stringify({ x: p.x, y: p.y, z: p.z, yaw: p.yaw, pitch: p.pitch, walk: silva.walk }) });
   const body = await res.json();
   if (!res.ok) { showError(body.error); return; }
@@ -256,7 +262,7 @@ async function apply() {
   const all = [...overrides, ...menuOverrides()];
   const pending = $('key').value.trim();
   if (pending) all.push(pending);
-  const res = await fetch('config', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+  const res = await fetch('config', { method: 'POST', headers: postHeaders,
     body: JSON.stringify({ seed: $('seed').value.trim(), overrides: all }) });
   if (!res.ok) { showError((await res.json()).error); return; }
   showError('');

@@ -23,7 +23,8 @@ int run_view(const ViewRequest& request, const Reporter& reporter) {
   } catch (const std::runtime_error& e) {
     throw IoError(std::string(e.what()) + " (is the port in use? try --port 0)");
   }
-  const std::string url = "http://" + request.host + ":" + std::to_string(port) + "/";
+  // The token in the URL is what lets the page change settings and capture (web/view_server.hpp).
+  const std::string url = "http://" + request.host + ":" + std::to_string(port) + "/?token=" + server.token();
   reporter.note("silva: seed " + std::to_string(explorer.world()->loaded().config.seed) + ", ready in " +
                 std::to_string(int(clock.seconds() * 1000)) + " ms");
   reporter.result({{"ok", true}, {"url", url}, {"port", port}}, "silva view: " + url + " (Ctrl-C to stop)");

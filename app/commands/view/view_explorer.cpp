@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "pipeline/config/cost_estimate.hpp"
 
 namespace silva::app {
 
@@ -24,6 +25,9 @@ LoadedConfig load_view_config(const ConfigSources& sources, const ViewEdits& edi
   if (edits.seed) all.seed = edits.seed;
   LoadedConfig loaded = load_config(all);
   resolve_seed(loaded);
+  // The guard of generate (a frame's chunks and placement work) and of world (the class map covers the world).
+  check_cost(estimate_generate_cost(loaded.config), false, "view", /*can_force=*/false);
+  check_cost(estimate_world_cost(loaded.config, std::nullopt), false, "view", /*can_force=*/false);
   return loaded;
 }
 
