@@ -1,5 +1,6 @@
 #include "systems/write_dataset.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -103,6 +104,14 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   work.encode_s = clock.seconds();
 }
 
+/// InputError when `path` is a symbolic link (Silva writes only into real folders of the run folder).
+void refuse_link(const fs::path& path) {
+  std::error_code ec;
+  if (fs::is_symlink(fs::symlink_status(path, ec)))
+    throw InputError(path.string() + ": is a symbolic link; Silva writes a run's frames only into real folders "
+                     "inside the run folder (replace the link with a folder)");
+}
+
 /// Writes `work`'s files and camera JSON and adds the frame to the writer's stats.
 void write_frame(const Config& config, const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
   const Stopwatch clock;
@@ -166,14 +175,19 @@ fs::path camera_file(const world::PlannedFrame& frame) {
 
 void create_output_folders(const fs::path& run_dir, const std::vector<world::PlannedFrame>& frames,
                            const io::OutputSelection& outputs) {
-  for (const world::PlannedFrame& f : frames) {
-    const fs::path seq = run_dir / f.sequence;
-    if (fs::exists(seq / "camera")) continue;
-    std::vector<std::string> names = {"camera"};
-    for (int t = 0; t < io::kOutputTypeCount; ++t)
-      if (outputs.has(io::OutputType(t))) names.push_back(io::output_type_name(io::OutputType(t)));
-    if (outputs.has(io::OutputType::Lidar)) names.push_back("lidar_labels");
+  std::vector<std::string> names = {"camera"};
+  for (int t = 0; t < io::kOutputTypeCount; ++t)
+    if (outputs.has(io::OutputType(t))) names.push_back(io::output_type_name(io::OutputType(t)));
+  if (outputs.has(io::OutputType::Lidar)) names.push_back("lidar_labels");
+  std::vector<std::string> sequences;
+  for (const world::PlannedFrame& f : frames)
+    if (std::find(sequences.begin(), sequences.end(), f.sequence) == sequences.end()) sequences.push_back(f.sequence);
+  for (const std::string& sequence : sequences) {
+    const fs::path seq = run_dir / sequence;
+    // A link would send the frames outside the run folder (a resumed or sharded run finds folders in place).
+    for (const fs::path& folder : {seq, seq / "camera"}) refuse_link(folder);
     for (const auto& n : names) {
+      refuse_link(seq / n);
       std::error_code ec;
       fs::create_directories(seq / n, ec);
       if (ec) throw IoError("cannot create folder " + (seq / n).string() + ": " + ec.message());

@@ -65,7 +65,8 @@ io::LabelPlanes label_planes(const render::GBuffer& g);
 /// Sequence-relative path of a frame's camera file, whose presence marks the frame complete.
 std::filesystem::path camera_file(const world::PlannedFrame& frame);
 
-/// Creates the output folders of `frames`' sequences under `run_dir` for the selected outputs.
+/// Creates the output folders of `frames`' sequences under `run_dir` for the selected outputs; InputError when
+/// a sequence folder or one of its output folders is a symbolic link.
 void create_output_folders(const std::filesystem::path& run_dir, const std::vector<world::PlannedFrame>& frames,
                            const io::OutputSelection& outputs);
 

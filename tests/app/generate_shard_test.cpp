@@ -45,6 +45,25 @@ TEST(GenerateShard, TwoShardsMergedEqualOneRun) {
   EXPECT_EQ(file_differences(folder_files(run_dir), folder_files(dir / "whole" / "0000000777")), "");
 }
 
+TEST(GenerateShard, AFolderLinkInsideTheRunFolderIsRefusedNotFollowed) {
+  const fs::path dir = fresh_test_dir();
+  const fs::path run_dir = dir / "sharded" / "0000000777";
+  ASSERT_EQ(run_silva(shard_args(dir / "sharded", "0/2"), dir).code, 0);
+  // Planted link: the next shard's depth frames would land in `elsewhere`.
+  const fs::path elsewhere = dir / "elsewhere";
+  fs::create_directories(elsewhere);
+  for (const auto& sequence : fs::directory_iterator(run_dir)) {
+    if (!fs::exists(sequence.path() / "depth")) continue;
+    fs::rename(sequence.path() / "depth", dir / ("depth-" + sequence.path().filename().string()));
+    fs::create_directory_symlink(elsewhere, sequence.path() / "depth");
+  }
+  const ProcessResult second = run_silva(shard_args(dir / "sharded", "1/2"), dir);
+  EXPECT_EQ(second.code, 2) << second.err;
+  EXPECT_NE(second.err.find("is a symbolic link"), std::string::npos) << second.err;
+  EXPECT_EQ(lines_of(second.err).back().rfind("silva: error: ", 0), 0u) << "one error line, last: " << second.err;
+  EXPECT_TRUE(fs::is_empty(elsewhere)) << "frames were written through the link";
+}
+
 TEST(GenerateShard, ShardNeedsAnExplicitSeedAndAValidIndex) {
   const fs::path dir = fresh_test_dir();
   std::vector<std::string> no_seed = shard_args(dir / "out", "0/2");
