@@ -49,12 +49,12 @@ std::span<const T> pixels(const cv::Mat& image) {
 /// One frame's label counts, read from its PNGs.
 CardCounts count_frame_files(const Dataset& d, const DatasetFrame& f) {
   CardCounts c;
-  if (d.has("semantic")) count_semantic(pixels<uint8_t>(read_image(d.file(f, "semantic", "png"), CV_8UC1)), c);
+  if (d.has("semantic")) count_semantic(pixels<uint8_t>(d.image(f, "semantic", CV_8UC1)), c);
   if (d.has("instance"))
-    count_instances(pixels<uint16_t>(read_image(d.file(f, "instance", "png"), CV_16UC1)),
+    count_instances(pixels<uint16_t>(d.image(f, "instance", CV_16UC1)),
                     read_instance_table(d.file(f, "instance", "json")), c);
   if (d.has("depth")) {
-    const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);  // a temporary would die before the loop
+    const cv::Mat depth = d.image(f, "depth", CV_16UC1);  // a temporary would die before the loop
     for (uint16_t mm : pixels<uint16_t>(depth)) count_depth(mm, c);
   }
   if (d.has("lidar")) {

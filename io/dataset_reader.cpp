@@ -1,5 +1,6 @@
 #include "io/dataset_reader.hpp"
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <system_error>
@@ -57,6 +58,11 @@ Dataset open_dataset(const fs::path& dir) {
     d.seed = d.manifest.at("seed").get<int64_t>();
     d.types = d.manifest.at("config").at("output").at("types").get<std::vector<std::string>>();
     const auto sequences = d.manifest.at("config").at("captures").at("sequences").get<std::vector<std::string>>();
+    const std::string resolution = d.manifest.at("config").at("output").at("resolution").get<std::string>();
+    if (std::sscanf(resolution.c_str(), "%dx%d", &d.width, &d.height) != 2 || d.width < 1 || d.height < 1 ||
+        d.width > 8192 || d.height > 8192)
+      throw InputError(where + ": config.output.resolution '" + limits::quoted_prefix(resolution) +
+                       "' is not WxH within 1 ... 8192");
     const nlohmann::json& counts = d.manifest.at("frames");
     int global = 0;
     for (const std::string& s : sequences) {
@@ -76,9 +82,17 @@ Dataset open_dataset(const fs::path& dir) {
   return d;
 }
 
-cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
+void require_dataset_file(const fs::path& path) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
+  const fs::file_status link = fs::symlink_status(path, ec);
+  if (!fs::exists(link)) throw InputError(path.string() + ": missing from the dataset");
+  if (fs::is_symlink(link))
+    throw InputError(path.string() + ": is a symbolic link; a dataset's files are regular files it wrote itself");
+  if (!fs::is_regular_file(link)) throw InputError(path.string() + ": not a regular file (a folder, FIFO or device)");
+}
+
+cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
+  require_dataset_file(path);
   cv::Mat image;
   if (path.extension() == ".png") {  // checked first: libpng prints its own error line on corrupt data
     std::string bytes = limits::read_input_file(path, "image");
@@ -95,6 +109,23 @@ cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
     throw InputError(path.string() + ": " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
                      ", not the frame's " + std::to_string(like.cols) + "x" + std::to_string(like.rows));
   return image;
+}
+
+cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int type) const {
+  const fs::path path = file(f, folder, "png");
+  const cv::Mat m = read_image(path, type, cv::Mat(height, width, CV_8UC1));
+  if (folder == "semantic") {
+    std::array<bool, 256> known{};
+    for (const OntologyClass& c : ontology.classes) known[c.id] = true;
+    for (int y = 0; y < m.rows; ++y) {
+      const uint8_t* row = m.ptr<uint8_t>(y);
+      for (int x = 0; x < m.cols; ++x)
+        if (!known[row[x]])
+          throw InputError(path.string() + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") holds class " +
+                           std::to_string(row[x]) + ", which ontology.json does not define");
+    }
+  }
+  return m;
 }
 
 cv::Mat read_depth_exr(const fs::path& path, const cv::Mat& like) {

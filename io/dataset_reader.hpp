@@ -33,20 +33,29 @@ struct Dataset {
   Ontology ontology;                ///< The dataset's ontology.json.
   std::vector<std::string> types;   ///< output.types of the run.
   std::vector<DatasetFrame> frames; ///< Every frame, in global order.
+  int width = 0, height = 0;        ///< output.resolution of the run: every image's size.
   /// True when the run wrote output type `type` (e.g. "semantic").
   bool has(const std::string& type) const;
   /// Path of frame `f`'s file in `folder` with extension `ext`, e.g. file(f, "rgb", "png").
   std::filesystem::path file(const DatasetFrame& f, const std::string& folder, const std::string& ext) const;
   /// InputError "<dir>: <what> needs output type '<type>' ..." unless the run wrote `type`.
   void require(const std::string& type, const std::string& what) const;
+  /// Frame `f`'s PNG in `folder` (e.g. "semantic") as OpenCV type `type`, checked as read_image does and against
+  /// the run's resolution; for "semantic", every pixel must hold a class id of the ontology. InputError naming the
+  /// file otherwise.
+  cv::Mat image(const DatasetFrame& f, const std::string& folder, int type) const;
 };
 
 /// Opens a finished dataset: InputError naming the folder when it is not one (no .silva-run.json,
 /// no manifest.json, or a malformed manifest/ontology).
 Dataset open_dataset(const std::filesystem::path& dir);
 
+/// InputError naming `path` unless it is a regular file of the dataset: missing, a symbolic link (a dataset's files
+/// are never links), or a folder, FIFO or device.
+void require_dataset_file(const std::filesystem::path& path);
+
 /// Reads an image with OpenCV (IMREAD_UNCHANGED: 8/16-bit grey as one channel, colour as BGR);
-/// InputError naming the file when it is missing, unreadable, not of OpenCV type `type` (e.g. CV_16UC1) or,
+/// InputError naming the file when it is not a regular file (require_dataset_file), unreadable, not of OpenCV type `type` (e.g. CV_16UC1) or,
 /// when `like` is not empty, not of `like`'s size.
 cv::Mat read_image(const std::filesystem::path& path, int type, const cv::Mat& like = {});
 

@@ -129,8 +129,8 @@ void cityscapes_frame(const Dataset& d, const DatasetFrame& f, const std::string
   const std::string stem = city + "_" + f.stem();
   place_file(d.file(f, "rgb", "png"), left / (stem + "_leftImg8bit.png"), options);
   place_file(d.file(f, "semantic", "png"), gt / (stem + "_gtFine_labelIds.png"), options);
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
+  const cv::Mat semantic = d.image(f, "semantic", CV_8UC1);
+  const cv::Mat instance = d.image(f, "instance", CV_16UC1);
   const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
   const std::vector<uint16_t> ids = cityscapes_ids(table, d.file(f, "instance", "json"));
   const int w = semantic.cols, h = semantic.rows;

@@ -11,7 +11,7 @@ namespace {
 /// The annotations of frame `f` (ids assigned later); instances under options.min_instance_area pixels are crowds.
 std::vector<nlohmann::json> instance_annotations(const Dataset& d, const DatasetFrame& f, const ExportOptions& options,
                                                  const std::string& image_name, nlohmann::json& image) {
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1);
+  const cv::Mat instance = d.image(f, "instance", CV_16UC1);
   const std::vector<InstanceEntry> table = read_instance_table(d.file(f, "instance", "json"));
   const int n = int(table.size());
   std::vector<PixelBox> boxes(table.size());

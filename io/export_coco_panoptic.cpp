@@ -15,8 +15,8 @@ namespace {
 /// Writes frame `f`'s panoptic PNG and returns its annotation.
 nlohmann::json panoptic_frame(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& out,
                               const ExportOptions& options, const std::string& image_name, nlohmann::json& image) {
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
-  const cv::Mat instance = read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
+  const cv::Mat semantic = d.image(f, "semantic", CV_8UC1);
+  const cv::Mat instance = d.image(f, "instance", CV_16UC1);
   const uint8_t void_id = d.ontology.id(Role::Background);
   bool has_instances[256] = {};
   for (int r = 0; r < kRoleCount; ++r)

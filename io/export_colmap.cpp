@@ -36,8 +36,8 @@ struct DepthPoint {
 std::vector<DepthPoint> frame_points(const Dataset& d, const DatasetFrame& f, const Camera& cam) {
   std::vector<DepthPoint> p;
   if (!d.has("depth") || !d.has("rgb")) return p;
-  const cv::Mat depth = read_image(d.file(f, "depth", "png"), CV_16UC1);
-  const cv::Mat rgb = read_image(d.file(f, "rgb", "png"), CV_8UC3, depth);
+  const cv::Mat depth = d.image(f, "depth", CV_16UC1);
+  const cv::Mat rgb = d.image(f, "rgb", CV_8UC3);
   if (depth.cols != cam.width || depth.rows != cam.height)
     throw InputError(d.file(f, "depth", "png").string() + ": not the size its camera file gives");
   const int stride = std::max(1, int(std::lround(std::sqrt(double(cam.width) * cam.height / 1000.0))));

@@ -3,6 +3,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
+#include "core/png_check.hpp"
 #include "io/atomic_file.hpp"
 
 namespace silva::io {
@@ -25,6 +27,11 @@ ExportFormat parse_export_format(const std::string& name, const std::string& whe
 }
 
 void place_file(const std::filesystem::path& from, const std::filesystem::path& to, const ExportOptions& options) {
+  require_dataset_file(from);
+  if (from.extension() == ".png") {  // a truncated or damaged image is refused, not passed on
+    const std::string bytes = limits::read_input_file(from, "image");
+    check_png({reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()}, from.string());
+  }
   if (!options.copy_files) return link_or_copy(from, to);
   std::error_code ec;
   std::filesystem::copy_file(from, to, ec);
@@ -38,7 +45,7 @@ std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, cons
     place_file(source, images / (f.stem() + ".png"), options);
     return f.stem() + ".png";
   }
-  const cv::Mat rgb = read_image(source, CV_8UC3);
+  const cv::Mat rgb = dataset.image(f, "rgb", CV_8UC3);
   std::vector<uint8_t> jpeg;
   if (!cv::imencode(".jpg", rgb, jpeg, {cv::IMWRITE_JPEG_QUALITY, ExportOptions::kJpegQuality}))
     throw IoError("cannot encode " + source.string() + " as JPEG");

@@ -53,7 +53,8 @@ std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, cons
                              const ExportOptions& options);
 
 /// Places the dataset file `from` at `to`: a hard link (a copy across file systems), or a copy with
-/// options.copy_files. IoError when neither can be made.
+/// options.copy_files. InputError when `from` is not a regular file of the dataset or, for a PNG, fails check_png
+/// (truncated or damaged); IoError when neither link nor copy can be made.
 void place_file(const std::filesystem::path& from, const std::filesystem::path& to, const ExportOptions& options);
 
 /// Parses a format name; InputError "<where>: unknown format 'x' (allowed: ...)" otherwise.

@@ -20,7 +20,7 @@ nlohmann::json matrix_json(const Mat4d& m) {
 
 /// Mask of frame `f`: 255 where a surface was hit, 0 for the background class (sky).
 void write_mask(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& path) {
-  const cv::Mat semantic = read_image(d.file(f, "semantic", "png"), CV_8UC1);
+  const cv::Mat semantic = d.image(f, "semantic", CV_8UC1);
   const uint8_t sky = d.ontology.id(Role::Background);
   std::vector<uint8_t> mask(size_t(semantic.cols) * semantic.rows);
   for (int y = 0; y < semantic.rows; ++y)
@@ -32,7 +32,7 @@ void write_mask(const Dataset& d, const DatasetFrame& f, const std::filesystem::
 /// Frame `f`'s depth PNG (millimetres) with the clamp value 65535 made 0 (no depth), so that no surface reads as
 /// 65.535 m.
 void write_depth(const Dataset& d, const DatasetFrame& f, const std::filesystem::path& path) {
-  const cv::Mat mm = read_image(d.file(f, "depth", "png"), CV_16UC1);
+  const cv::Mat mm = d.image(f, "depth", CV_16UC1);
   std::vector<uint16_t> depth(size_t(mm.cols) * mm.rows);
   for (int y = 0; y < mm.rows; ++y)
     for (int x = 0; x < mm.cols; ++x) {

@@ -119,7 +119,7 @@ cv::Mat depth_metres(const Dataset& d, const DatasetFrame& f) {
   if (d.has("depth_exr")) {
     m = read_depth_exr(d.file(f, "depth_exr", "exr"));
   } else {
-    read_image(d.file(f, "depth", "png"), CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
+    d.image(f, "depth", CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
   }
   m.setTo(std::numeric_limits<float>::infinity(), m == 0.0f);
   return m;
@@ -194,25 +194,29 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
     put("/odom", t, encode_odometry({t, kMapFrame}, kBaseFrame, map_from_base));
     const RosHeader at_camera{t, kCameraFrame};
     put("/camera/camera_info", t, encode_camera_info(at_camera, cam.camera));
-    const uint32_t w = uint32_t(cam.camera.width), h = uint32_t(cam.camera.height);
-    const cv::Mat like(int(h), int(w), CV_8UC1);
+    if (cam.camera.width != d.width || cam.camera.height != d.height)
+      throw InputError(d.file(f, "camera", "json").string() + ": " + std::to_string(cam.camera.width) + "x" +
+                       std::to_string(cam.camera.height) + ", not the run's output.resolution");
+    const uint32_t w = uint32_t(d.width), h = uint32_t(d.height);
     if (rgb) {
-      cv::Mat image = read_image(d.file(f, "rgb", "png"), CV_8UC3, like);
+      cv::Mat image = d.image(f, "rgb", CV_8UC3);
       cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
       put("/camera/image_raw", t, encode_image(at_camera, w, h, "rgb8", 3 * w, pixels(image)));
     }
     if (depth) {
       const cv::Mat m = depth_metres(d, f);
-      if (m.cols != int(w) || m.rows != int(h)) throw InputError(d.file(f, "depth", "png").string() + ": not the frame's size");
+      if (m.cols != int(w) || m.rows != int(h))
+        throw InputError(d.file(f, d.has("depth_exr") ? "depth_exr" : "depth", d.has("depth_exr") ? "exr" : "png").string() +
+                         ": not the size its camera file gives");
       put("/camera/depth/image_raw", t, encode_image(at_camera, w, h, "32FC1", 4 * w, pixels(m)));
     }
     if (semantic)
       put("/camera/semantic/image_raw", t,
-          encode_image(at_camera, w, h, "mono8", w, pixels(read_image(d.file(f, "semantic", "png"), CV_8UC1, like))));
+          encode_image(at_camera, w, h, "mono8", w, pixels(d.image(f, "semantic", CV_8UC1))));
     if (instance)
       put("/camera/instance/image_raw", t,
           encode_image(at_camera, w, h, "mono16", 2 * w,
-                       pixels(read_image(d.file(f, "instance", "png"), CV_16UC1, like))));
+                       pixels(d.image(f, "instance", CV_16UC1))));
     if (lidar) put("/lidar/points", t, encode_point_cloud({t, kLidarFrame}, scan_points(d, f, beams)));
     last = t;
     ++done;

@@ -60,12 +60,6 @@ std::string two_digits(int n) {
   return buf;
 }
 
-/// InputError naming `path` unless it is a file of the dataset.
-void require_file(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": missing from the dataset");
-}
-
 /// Per frame, its scan's instance index (the high 16 bits of a dataset label) -> the object's index within the
 /// frame's sequence: objects numbered 1, 2, ... in the order the sequence's scans first see them (frame order, then
 /// scan index), so one object keeps one index in every scan. InputError for a sequence of more than 65 535 objects.
@@ -74,7 +68,7 @@ std::vector<std::vector<uint32_t>> sequence_instances(const Dataset& d) {
   std::map<std::string, std::map<uint64_t, uint32_t>> numbered;  // sequence -> instance_id -> index
   for (size_t i = 0; i < d.frames.size(); ++i) {
     const fs::path table = d.file(d.frames[i], "lidar_labels", "json");
-    require_file(table);
+    require_dataset_file(table);
     const nlohmann::json j = parse_json_text(read_text_file(table), table.string());
     std::map<uint64_t, uint32_t>& seen = numbered[d.frames[i].sequence];
     remap[i].assign(1, 0);
@@ -101,8 +95,8 @@ std::vector<std::vector<uint32_t>> sequence_instances(const Dataset& d) {
 void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, const std::vector<uint32_t>& instances,
                   const fs::path& out, std::map<int, uint64_t>& counts) {
   const fs::path scan = d.file(f, "lidar", "bin"), label = d.file(f, "lidar_labels", "label");
-  require_file(scan);
-  require_file(label);
+  require_dataset_file(scan);
+  require_dataset_file(label);
   std::error_code ec;
   const uintmax_t scan_bytes = fs::file_size(scan, ec);
   if (ec || scan_bytes % 16) throw InputError(scan.string() + ": not a KITTI scan (float32 x, y, z, intensity)");
@@ -185,7 +179,7 @@ void export_semantickitti(const Dataset& d, const fs::path& out, const ExportOpt
       create_folder(seq / "labels");
       if (images) create_folder(seq / "image_2");
       for (const char* name : {"calib.txt", "poses.txt"}) {
-        require_file(d.dir / f.sequence / name);
+        require_dataset_file(d.dir / f.sequence / name);
         place_file(d.dir / f.sequence / name, seq / name, options);
       }
     }

@@ -545,15 +545,44 @@ def check_damaged():
         (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", "x")), "frames"),
         (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", 50)), "is missing"),
     ]
-    for edit, expected in cases:
+    readers = ("export", "card", "verify")
+    cases = [(edit, expected, readers) for edit, expected in cases]
+    rgb = lambda d: os.path.join(d, "random", "rgb", "000000.png")  # noqa: E731
+    semantic = lambda d: os.path.join(d, "random", "semantic", "000000.png")  # noqa: E731
+
+    def replace_with(path, make):
+        os.remove(path)
+        make(path)
+
+    def truncate(path):
+        data = open(path, "rb").read()
+        open(path, "wb").write(data[:len(data) // 2])
+
+    def relabel(path, value):
+        image = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+        image[0, 0] = value
+        cv2.imwrite(path, image)
+
+    cases += [
+        (lambda d: truncate(rgb(d)), "rgb/000000.png", ("export",)),
+        (lambda d: replace_with(rgb(d), lambda p: os.symlink("/etc/passwd", p)), "symbolic link", ("export",)),
+        (lambda d: replace_with(rgb(d), lambda p: os.symlink(p + ".gone", p)), "symbolic link", ("export",)),
+        (lambda d: replace_with(rgb(d), os.mkdir), "not a regular file", ("export",)),
+        (lambda d: relabel(semantic(d), 250), "class 250", ("export-coco", "card", "verify")),
+        (lambda d: cv2.imwrite(semantic(d), np.zeros((96, 128), np.uint8)), "128x96", ("export-coco", "card", "verify")),
+    ]
+    commands = {"export": ["export", None, "--format", "colmap"], "export-coco": ["export", None, "--format",
+                "coco-panoptic"], "card": ["card", None], "verify": ["verify", None, "--sample", "0.01"]}
+    for edit, expected, which in cases:
         d = damaged(edit)
-        for command in (["export", d, "--format", "colmap"], ["card", d], ["verify", d, "--sample", "0.01"]):
+        for command in ([d if a is None else a for a in commands[w]] for w in which):
             r = silva(*command, "--quiet", expect=2)
             assert expected in r.stderr and r.stderr.count("\n") == 1, (command, r.stderr)
         assert not os.path.exists(os.path.join(d, "export", "colmap")), "a refused export left files"
+        assert not os.path.exists(os.path.join(d, "export", "coco-panoptic")), "a refused export left files"
     r = silva("verify", DATASET, "--sample", "nan", expect=2)
     assert "not a finite number" in r.stderr, r.stderr
-    print(f"damaged: {len(cases)} damaged datasets x export, card, verify: exit 2, one line naming the file")
+    print(f"damaged: {len(cases)} damaged datasets through export, card and verify: exit 2, one line naming the file")
 
 
 CHECKS = {"generate": generate, "coco-panoptic": check_coco_panoptic, "coco-instances": check_coco_instances,

@@ -113,7 +113,7 @@ void check_frame_files(const io::Dataset& d, const io::DatasetFrame& f) {
 /// The frame's label, depth and normal files.
 FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Camera& camera) {
   FrameTruth t;
-  const cv::Mat semantic = io::read_image(d.file(f, "semantic", "png"), CV_8UC1);
+  const cv::Mat semantic = d.image(f, "semantic", CV_8UC1);
   if (semantic.cols != camera.width || semantic.rows != camera.height)
     throw InputError(d.file(f, "semantic", "png").string() + ": not the size its camera file gives");
   t.width = semantic.cols;
@@ -124,7 +124,7 @@ FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Cam
     const cv::Mat depth = io::read_depth_exr(d.file(f, "depth_exr", "exr"), semantic);
     t.depth.assign(depth.ptr<float>(), depth.ptr<float>() + n);
   } else {
-    const cv::Mat depth = io::read_image(d.file(f, "depth", "png"), CV_16UC1, semantic);
+    const cv::Mat depth = d.image(f, "depth", CV_16UC1);
     t.depth.resize(n);
     for (size_t i = 0; i < n; ++i) t.depth[i] = float(depth.ptr<uint16_t>()[i]) / 1000.0f;
     t.depth_step = 0.001;
@@ -132,7 +132,7 @@ FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Cam
   if (d.has("instance")) {
     const fs::path table_path = d.file(f, "instance", "json");
     const std::vector<io::InstanceEntry> table = io::read_instance_table(table_path);
-    const cv::Mat index = io::read_image(d.file(f, "instance", "png"), CV_16UC1, semantic);
+    const cv::Mat index = d.image(f, "instance", CV_16UC1);
     t.instance.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const uint16_t k = index.ptr<uint16_t>()[i];
@@ -143,7 +143,7 @@ FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Cam
     }
   }
   if (d.has("normal")) {
-    const cv::Mat normal = io::read_image(d.file(f, "normal", "png"), CV_8UC3, semantic);
+    const cv::Mat normal = d.image(f, "normal", CV_8UC3);
     t.normal.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const uint8_t* bgr = normal.ptr<uint8_t>() + 3 * i;
