@@ -94,6 +94,12 @@ void overlay(raycast::LidarPreset& p, const toml::table& table, const std::strin
                        std::to_string(p.elevations_deg.size()) + " beams");
     if (lo || hi) throw InputError(at + ": lidar.presets." + name + " sets both elevations_deg and elevation_min/max_deg; use one");
   } else if (channels || lo || hi) {
+    // A key left out keeps the preset's own beams: their count, lowest or highest elevation.
+    if (!p.elevations_deg.empty()) {
+      if (!channels) channels = int(p.elevations_deg.size());
+      if (!lo) lo = p.elevations_deg.front();
+      if (!hi) hi = p.elevations_deg.back();
+    }
     if (!channels || !lo || !hi)
       throw InputError(at + ": lidar.presets." + name + " needs channels, elevation_min_deg and elevation_max_deg together (or elevations_deg)");
     if (*hi < *lo || (*channels == 1 && *hi != *lo))
@@ -134,6 +140,8 @@ std::map<std::string, raycast::LidarPreset> parse_lidar_presets(const toml::tabl
 
 raycast::LidarPreset selected_lidar_preset(const LoadedConfig& loaded, const std::filesystem::path& lidar_toml) {
   std::error_code ec;
+  if (std::filesystem::exists(lidar_toml, ec) && !std::filesystem::is_regular_file(lidar_toml, ec))
+    throw InputError(lidar_toml.string() + ": the LiDAR preset file is not a regular file (a folder or device)");
   if (!std::filesystem::is_regular_file(lidar_toml, ec)) throw IoError(lidar_toml.string() + ": cannot read the LiDAR preset file");
   toml::table file;
   try {

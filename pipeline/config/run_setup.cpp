@@ -83,15 +83,19 @@ fs::path asset_library_path() {
   return path;
 }
 
-RunSetup make_run_setup(const LoadedConfig& loaded) {
-  RunSetup setup;
+void load_run_files(const LoadedConfig& loaded, RunSetup& setup) {
   setup.ontology_json = data_path("configs/ontology.json");
   setup.lighting_toml = data_path("configs/lighting.toml");
-  setup.library_json = asset_library_path();
   setup.ontology = io::load_ontology(setup.ontology_json);
   setup.lighting = selected_lighting(loaded, setup.lighting_toml);
   setup.lidar_toml = data_path("configs/lidar.toml");
   setup.lidar = selected_lidar_preset(loaded, setup.lidar_toml);
+}
+
+RunSetup make_run_setup(const LoadedConfig& loaded) {
+  RunSetup setup;
+  load_run_files(loaded, setup);
+  setup.library_json = asset_library_path();
   Season season = Season::Summer;
   parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
   setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));

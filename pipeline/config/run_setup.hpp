@@ -31,8 +31,11 @@ struct RunSetup {
 /// the binary (SILVA_ASSET_DIR). Throws InputError naming the path when it is missing.
 std::filesystem::path asset_library_path();
 
-/// Loads ontology, presets (built-in, configs/lighting.toml, the config's own) and assets and
-/// builds the world context for `loaded`. Throws InputError naming the file at fault.
+/// Loads the run's data files into `setup`: the ontology, the lighting presets (built-in, configs/lighting.toml,
+/// the config's own) and the LiDAR preset `loaded` selects. Throws InputError naming the file or key at fault.
+void load_run_files(const LoadedConfig& loaded, RunSetup& setup);
+
+/// load_run_files, then the assets and the world context for `loaded`. Throws InputError naming the file at fault.
 RunSetup make_run_setup(const LoadedConfig& loaded);
 
 /// The resolved config as TOML without output.dir: what the run marker records for `--resume`.

@@ -67,6 +67,25 @@ columns = 90
   EXPECT_EQ(p.at("hdl64e").elevations_deg.size(), 64u);
 }
 
+TEST(LidarConfig, OneBeamKeyChangesOnlyItselfKeepingThePresetsOtherBeams) {
+  const toml::table t = toml::parse(R"(
+[lidar.presets.vlp16]
+channels = 31
+[lidar.presets.os1_64]
+elevation_max_deg = 0
+)");
+  const auto p = parse_lidar_presets(*t["lidar"]["presets"].as_table(), "user.toml", shipped());
+  const std::vector<double>& vlp = p.at("vlp16").elevations_deg;  // vlp16: -15 ... 15
+  ASSERT_EQ(vlp.size(), 31u);
+  EXPECT_EQ(vlp.front(), -15);
+  EXPECT_EQ(vlp.back(), 15);
+  EXPECT_DOUBLE_EQ(vlp[1] - vlp[0], 1.0);
+  const std::vector<double>& os1 = p.at("os1_64").elevations_deg;
+  ASSERT_EQ(os1.size(), 64u);
+  EXPECT_EQ(os1.front(), shipped().at("os1_64").elevations_deg.front());
+  EXPECT_EQ(os1.back(), 0);
+}
+
 TEST(LidarConfig, MalformedTablesAreOneClearLine) {
   const std::string unknown = error_of("[lidar.presets.x]\nbeams = 3\n");
   EXPECT_NE(unknown.find("user.toml:2:9: unknown key 'lidar.presets.x.beams' (allowed: channels,"), std::string::npos)
@@ -81,8 +100,7 @@ TEST(LidarConfig, MalformedTablesAreOneClearLine) {
   EXPECT_NE(error_of(beams + "]\n").find("1 to 1024 elevations"), std::string::npos);
   EXPECT_NE(error_of("[lidar.presets.x]\nelevations_deg = [-1, 1]\nchannels = 3\n").find("lists 2 beams"),
             std::string::npos);
-  EXPECT_NE(error_of("[lidar.presets.x]\nchannels = 8\n").find("needs channels, elevation_min_deg and elevation_max_deg"),
-            std::string::npos);
+  EXPECT_EQ(error_of("[lidar.presets.x]\nchannels = 8\n"), "") << "one beam key keeps vlp16's other beams";
   EXPECT_NE(error_of("[lidar.presets.x]\nmin_range = 200\n").find("min_range must be below max_range"), std::string::npos);
   EXPECT_NE(error_of("[lidar.presets]\nx = 3\n").find("lidar.presets.x must be a table"), std::string::npos);
   for (const std::string& e : {unknown, error_of("[lidar.presets.x]\ndropout = 2\n")}) EXPECT_EQ(e.find('\n'), std::string::npos);
@@ -107,6 +125,20 @@ TEST(LidarConfig, CliRejectsAnUnknownPresetAndABadTableWithExitTwo) {
   EXPECT_EQ(bad.code, 2);
   EXPECT_EQ(test::lines_of(bad.err).size(), 1u) << bad.err;
   EXPECT_NE(bad.err.find("lidar.presets.vlp16.channels must be a whole number"), std::string::npos) << bad.err;
+}
+
+TEST(LidarConfig, ValidateRefusesWhatGenerateRefuses) {
+  namespace fs = std::filesystem;
+  const fs::path dir = test::fresh_test_dir();
+  std::ofstream(dir / "ranges.toml") << "[lidar.presets.vlp16]\nmin_range = 50\nmax_range = 10\n";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"validate", "--set", "lidar.preset=vlp17"},
+        std::vector<std::string>{"validate", "--set", "lidar.preset="},
+        std::vector<std::string>{"validate", "--config", (dir / "ranges.toml").string()}}) {
+    const test::ProcessResult r = test::run_silva(args, dir);
+    EXPECT_EQ(r.code, 2) << args.back() << "\n" << r.err;
+    EXPECT_EQ(test::lines_of(r.err).size(), 1u) << r.err;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/cli/command_options.hpp"
+#include "pipeline/config/run_setup.hpp"
 #include "pipeline/console/reporter.hpp"
 #include "app/cli/subcommands.hpp"
 #include "pipeline/config/config_print.hpp"
@@ -25,6 +26,8 @@ int validate(const ValidateArgs& args) {
   const CapturesConfig& captures = loaded.config.captures;
   if (std::find(captures.sequences.begin(), captures.sequences.end(), "custom") != captures.sequences.end())
     io::read_pose_file(captures.poses_file);  // the pose file is part of what generate would read
+  RunSetup files;  // the ontology, lighting and LiDAR presets generate would read
+  load_run_files(loaded, files);
   resolve_seed(loaded);
   const std::string name = args.sources.file.empty() ? "built-in defaults" : args.sources.file;
   if (loaded.seed_from_clock) reporter.note("silva: no seed given; this run would draw one from the clock");
@@ -44,7 +47,7 @@ Handler add_validate_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "validate",
       "Load a config (TOML file + --set overrides), check every key, type, range and cross-key "
-      "rule, and report; nothing is written. Exit 0 when valid, 2 with one error line when not.");
+      "rule, and the ontology, lighting and LiDAR presets it selects, and report; nothing is written. Exit 0 when valid, 2 with one error line when not.");
   add_config_options(*cmd, args->sources, /*with_seed=*/false);
   cmd->add_flag("--print", args->print,
                 "print the fully resolved config as TOML, every key (re-reading it gives the same config)");

@@ -45,6 +45,7 @@ ViewPose pose_of(const nlohmann::json& fields) {
   p.position = Vec3d(num("x"), num("y"), num("z"));
   p.yaw_deg = num("yaw");
   p.pitch_deg = std::clamp(num("pitch"), -90.0, 90.0);
+  if (fields.contains("walk") && !fields["walk"].is_boolean()) throw InputError("capture: walk must be true or false");
   p.walk = fields.value("walk", false);
   return p;
 }
