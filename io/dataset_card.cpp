@@ -58,16 +58,9 @@ CardCounts count_frame_files(const Dataset& d, const DatasetFrame& f) {
     for (uint16_t mm : pixels<uint16_t>(depth)) count_depth(mm, c);
   }
   if (d.has("lidar")) {
-    const std::filesystem::path path = d.file(f, "lidar_labels", "label");
-    const std::string bytes = read_text_file(path);
-    if (bytes.size() % 4) throw InputError(path.string() + ": not a SemanticKITTI label file (uint32 per point)");
-    for (size_t i = 0; i < bytes.size(); i += 4) {
-      uint32_t label;
-      std::memcpy(&label, bytes.data() + i, 4);
-      if ((label & 0xFFFFu) > 255) throw InputError(path.string() + ": class id above 255 at point " + std::to_string(i / 4));
-      ++c.lidar_class_points[label & 0xFFFFu];
-    }
-    c.lidar_points = bytes.size() / 4;
+    const std::vector<uint32_t> labels = d.lidar_labels(f);
+    for (const uint32_t label : labels) ++c.lidar_class_points[label & 0xFFFFu];
+    c.lidar_points = labels.size();
   }
   return c;
 }

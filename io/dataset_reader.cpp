@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/capture_set.hpp"
 #include "io/json_read.hpp"
+#include "io/lidar_files.hpp"
 #include "io/ontology_file.hpp"
 #include "io/run_folder.hpp"
 
@@ -126,6 +127,25 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
     }
   }
   return m;
+}
+
+std::vector<uint32_t> Dataset::lidar_labels(const DatasetFrame& f) const {
+  const fs::path scan = file(f, "lidar", "bin"), path = file(f, "lidar_labels", "label");
+  require_dataset_file(scan);
+  require_dataset_file(path);
+  std::vector<uint32_t> labels = read_semantic_kitti_labels(path);
+  std::error_code ec;
+  const uintmax_t points = fs::file_size(scan, ec) / 16;
+  if (ec || labels.size() != points)
+    throw InputError(path.string() + ": " + std::to_string(labels.size()) + " labels for the " + std::to_string(points) +
+                     " points of " + scan.filename().string());
+  std::array<bool, 65536> known{};
+  for (const OntologyClass& c : ontology.classes) known[c.id] = true;
+  for (size_t i = 0; i < labels.size(); ++i)
+    if (!known[labels[i] & 0xFFFFu])
+      throw InputError(path.string() + ": point " + std::to_string(i) + " holds class " +
+                       std::to_string(labels[i] & 0xFFFFu) + ", which ontology.json does not define");
+  return labels;
 }
 
 cv::Mat read_depth_exr(const fs::path& path, const cv::Mat& like) {

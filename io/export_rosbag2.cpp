@@ -83,11 +83,7 @@ LidarBeams lidar_beams(const Dataset& d) {
 /// "LiDAR": column c fires at azimuth 180° - 360° c / columns, c / (columns rotation_hz) after the sweep began).
 std::vector<RosPoint> scan_points(const Dataset& d, const DatasetFrame& f, const LidarBeams& beams) {
   const std::vector<std::array<float, 4>> xyzi = read_kitti_scan_xyzi(d.file(f, "lidar", "bin"));
-  const fs::path label_path = d.file(f, "lidar_labels", "label");
-  const std::vector<uint32_t> labels = read_semantic_kitti_labels(label_path);
-  if (labels.size() != xyzi.size())
-    throw InputError(label_path.string() + ": " + std::to_string(labels.size()) + " labels for " +
-                     std::to_string(xyzi.size()) + " points");
+  const std::vector<uint32_t> labels = d.lidar_labels(f);
   std::vector<RosPoint> points(xyzi.size());
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
   for (size_t i = 0; i < xyzi.size(); ++i) {

@@ -6,6 +6,7 @@
 // sequence: autopilot 00, random 01, custom 02. semantic-kitti.yaml is the label map the semantic-kitti-api
 // reads (labels, color_map, content, learning_map, learning_map_inv, learning_ignore, split).
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -15,6 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/export_formats.hpp"
 #include "io/json_read.hpp"
+#include "io/lidar_files.hpp"
 
 namespace silva::io {
 
@@ -94,32 +96,19 @@ std::vector<std::vector<uint32_t>> sequence_instances(const Dataset& d) {
 /// its points per SemanticKITTI id.
 void write_labels(const Dataset& d, const DatasetFrame& f, const KittiMap& map, const std::vector<uint32_t>& instances,
                   const fs::path& out, std::map<int, uint64_t>& counts) {
-  const fs::path scan = d.file(f, "lidar", "bin"), label = d.file(f, "lidar_labels", "label");
-  require_dataset_file(scan);
-  require_dataset_file(label);
-  std::error_code ec;
-  const uintmax_t scan_bytes = fs::file_size(scan, ec);
-  if (ec || scan_bytes % 16) throw InputError(scan.string() + ": not a KITTI scan (float32 x, y, z, intensity)");
-  std::string bytes = read_text_file(label);
-  if (bytes.size() != scan_bytes / 4)
-    throw InputError(label.string() + ": " + std::to_string(bytes.size() / 4) + " labels for " +
-                     std::to_string(scan_bytes / 16) + " points of " + scan.filename().string());
-  for (size_t i = 0; i < bytes.size(); i += 4) {
-    uint32_t v;
-    std::memcpy(&v, bytes.data() + i, 4);
-    const uint32_t cls = v & 0xFFFFu;
-    if (cls > 255 || map.kitti[cls] < 0)
-      throw InputError(label.string() + ": point " + std::to_string(i / 4) + " has class id " + std::to_string(cls) +
-                       ", which ontology.json does not hold");
-    const uint32_t instance = v >> 16;
+  const fs::path label = d.file(f, "lidar_labels", "label");
+  std::vector<uint32_t> labels = d.lidar_labels(f);  // one per point, class ids of the ontology
+  for (size_t i = 0; i < labels.size(); ++i) {
+    uint32_t& v = labels[i];
+    const uint32_t cls = v & 0xFFFFu, instance = v >> 16;
     if (instance >= instances.size())
-      throw InputError(label.string() + ": point " + std::to_string(i / 4) + " has instance " +
-                       std::to_string(instance) + ", which " + f.sequence + "/lidar_labels/" +
-                       label.stem().string() + ".json does not hold");
+      throw InputError(label.string() + ": point " + std::to_string(i) + " has instance " + std::to_string(instance) +
+                       ", which " + f.sequence + "/lidar_labels/" + label.stem().string() + ".json does not hold");
     ++counts[map.kitti[cls]];
     v = instances[instance] << 16 | uint32_t(map.kitti[cls]);
-    std::memcpy(bytes.data() + i, &v, 4);
   }
+  std::vector<uint8_t> bytes(labels.size() * 4);
+  if (!labels.empty()) std::memcpy(bytes.data(), labels.data(), bytes.size());
   write_file_atomic(out, bytes);
 }
 
@@ -168,8 +157,12 @@ void export_semantickitti(const Dataset& d, const fs::path& out, const ExportOpt
   try {
     period = 1.0 / d.manifest.at("sensors").at("lidar").at("rotation_hz").get<double>();
   } catch (const nlohmann::json::exception&) {
-    throw InputError((d.dir / "manifest.json").string() + ": no sensors.lidar.rotation_hz for a dataset with lidar");
   }
+  if (!std::isfinite(period) || period <= 0 || period > 10)  // rotation_hz 0.1 ... 100, as the presets allow
+    throw InputError((d.dir / "manifest.json").string() +
+                     ": sensors.lidar.rotation_hz must be a number of 0.1 ... 100 for a dataset with lidar");
+  std::map<std::string, size_t> frames_of;
+  for (const DatasetFrame& f : d.frames) ++frames_of[f.sequence];
   std::map<std::string, std::string> times;
   std::set<int> numbers;
   for (const DatasetFrame& f : d.frames) {
@@ -178,10 +171,11 @@ void export_semantickitti(const Dataset& d, const fs::path& out, const ExportOpt
       create_folder(seq / "velodyne");
       create_folder(seq / "labels");
       if (images) create_folder(seq / "image_2");
-      for (const char* name : {"calib.txt", "poses.txt"}) {
-        require_dataset_file(d.dir / f.sequence / name);
-        place_file(d.dir / f.sequence / name, seq / name, options);
-      }
+      require_dataset_file(d.dir / f.sequence / "calib.txt");
+      require_dataset_file(d.dir / f.sequence / "poses.txt");
+      check_kitti_calib(d.dir / f.sequence / "calib.txt");
+      check_kitti_poses(d.dir / f.sequence / "poses.txt", frames_of[f.sequence]);
+      for (const char* name : {"calib.txt", "poses.txt"}) place_file(d.dir / f.sequence / name, seq / name, options);
     }
     char line[32];
     std::snprintf(line, sizeof line, "%.6e\n", f.frame * period);

@@ -1,8 +1,10 @@
 #include "io/lidar_files.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/input_limits.hpp"
@@ -120,6 +122,45 @@ std::string kitti_poses(std::span<const Mat4d> camera_to_world) {
     out += line.substr(3);  // drop "x: "
   }
   return out;
+}
+
+namespace {
+
+/// The lines of a KITTI text file, each "[<key>: ]" and 12 finite numbers; InputError naming `path` and the line.
+std::vector<std::string> kitti_rows(const std::filesystem::path& path, bool keyed) {
+  std::istringstream in(limits::read_input_file(path, "KITTI file"));
+  std::vector<std::string> keys;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    std::string key;
+    if (keyed) row >> key;
+    int count = 0;
+    double v = 0;
+    while (row >> v) {
+      if (!std::isfinite(v)) break;
+      ++count;
+    }
+    if (count != 12 || !row.eof())
+      throw InputError(path.string() + ": line " + std::to_string(keys.size() + 1) +
+                       " is not 12 finite numbers" + (keyed ? " after its key" : ""));
+    keys.push_back(key);
+  }
+  return keys;
+}
+
+}  // namespace
+
+void check_kitti_calib(const std::filesystem::path& path) {
+  if (kitti_rows(path, true) != std::vector<std::string>{"P0:", "P1:", "P2:", "P3:", "Tr:"})
+    throw InputError(path.string() + ": not a KITTI calib.txt (lines P0:, P1:, P2:, P3:, Tr:)");
+}
+
+void check_kitti_poses(const std::filesystem::path& path, size_t frames) {
+  const size_t rows = kitti_rows(path, false).size();
+  if (rows != frames)
+    throw InputError(path.string() + ": " + std::to_string(rows) + " poses for the sequence's " +
+                     std::to_string(frames) + " frames");
 }
 
 }  // namespace silva::io

@@ -44,4 +44,11 @@ std::string kitti_calib(const Camera& camera, const Mat4d& sensor_to_camera);
 /// A KITTI poses.txt: one line per pose, the 3x4 row-major transform of camera i to camera 0's frame.
 std::string kitti_poses(std::span<const Mat4d> camera_to_world);
 
+/// InputError naming `path` unless it is a calib.txt of kitti_calib's form: lines P0:, P1:, P2:, P3: and Tr:, in
+/// that order, each with 12 finite numbers.
+void check_kitti_calib(const std::filesystem::path& path);
+
+/// InputError naming `path` unless it is a poses.txt of kitti_poses's form with `frames` lines of 12 finite numbers.
+void check_kitti_poses(const std::filesystem::path& path, size_t frames);
+
 }  // namespace silva::io

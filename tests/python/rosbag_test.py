@@ -3,7 +3,7 @@
 through npm's @mcap/core and @foxglove/rosmsg2-serialization (tests/node/read_bag.mjs, run with Debian's node),
 compared with the dataset's own files through OpenCV and numpy.
 
-Usage: rosbag_test.py SILVA WORKDIR TEST   (TEST: generate, bag, errors). `generate` makes the small dataset with
+Usage: rosbag_test.py SILVA WORKDIR TEST   (TEST: generate, bag, errors, damaged: damaged LiDAR files). `generate` makes the small dataset with
 LiDAR the others read (a ctest fixture). Exits 77 (skipped) when node or the npm packages are missing.
 """
 import hashlib
@@ -200,4 +200,51 @@ def errors():
                 assert os.path.isfile(os.path.join(final, sequence, "metadata.yaml"))
 
 
-{"generate": generate, "bag": bag, "errors": errors}[TEST]()
+def damaged():
+    """Damaged LiDAR files stop the readers of a LiDAR dataset (semantickitti and rosbag2 exports, the card) with exit
+    2 and one line naming the file, where they passed them on or wrote nan."""
+    work = os.path.join(WORK, "damaged")
+    sequence = "random"
+    labels = lambda d: os.path.join(d, sequence, "lidar_labels", "000000.label")  # noqa: E731
+
+    def short_labels(d):
+        data = open(labels(d), "rb").read()
+        open(labels(d), "wb").write(data[:-4])
+
+    def foreign_class(d):
+        data = np.fromfile(labels(d), dtype="<u4")
+        data[0] = (data[0] & 0xFFFF0000) | 250
+        data.tofile(labels(d))
+
+    def manifest_edit(change):
+        def edit(d):
+            path = os.path.join(d, "manifest.json")
+            j = json.load(open(path))
+            change(j)
+            json.dump(j, open(path, "w"))
+        return edit
+
+    def write(name, text):
+        return lambda d: open(os.path.join(d, sequence, name), "w").write(text)
+
+    cases = [
+        (short_labels, "labels for the", ("semantickitti", "rosbag2", "card")),
+        (foreign_class, "class 250", ("semantickitti", "rosbag2", "card")),
+        (write("poses.txt", ""), "0 poses", ("semantickitti",)),
+        (write("calib.txt", "P0: 1 2 3\n"), "calib.txt", ("semantickitti",)),
+        (manifest_edit(lambda j: j["sensors"]["lidar"].__setitem__("rotation_hz", 0)), "rotation_hz",
+         ("semantickitti",)),
+    ]
+    for edit, expected, readers in cases:
+        copy = os.path.join(work, f"{SEED:010d}")
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
+        edit(copy)
+        for reader in readers:
+            args = ["card", copy] if reader == "card" else ["export", copy, "--format", reader]
+            r = silva(*args, "--quiet", expect=2)
+            assert expected in r.stderr and r.stderr.count("\n") == 1, (reader, r.stderr)
+            assert not os.path.exists(os.path.join(copy, "export", reader)), f"{reader}: a refused export left files"
+
+
+{"generate": generate, "bag": bag, "errors": errors, "damaged": damaged}[TEST]()
