@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "pipeline/config/config_checks.hpp"
 #include "pipeline/config/run_setup.hpp"
 #include "pipeline/schedule/world_schedule.hpp"
 #include "core/error.hpp"
+#include "core/input_limits.hpp"
 #include "io/run_folder.hpp"
 #include "app/cli/pipeline_names.hpp"
 
@@ -14,25 +16,26 @@ namespace silva::app {
 
 namespace {
 
-/// The chunks within kMapMargin of the cameras' bounding box, (i, j) order.
+/// The chunks within kMapMargin of some camera, (i, j) order: a corridor along the cameras, so a long trajectory
+/// costs its length, not the area of its bounding box.
 std::vector<ChunkCoord> chunks_under_cameras(const io::CardCounts& c, double chunk_size) {
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  std::set<ChunkCoord> coords;
   for (const Vec3d& p : c.positions)
-    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-  std::vector<ChunkCoord> coords;
-  for (int i = int(std::floor((x0 - kMapMargin) / chunk_size)); i < int(std::ceil((x1 + kMapMargin) / chunk_size)); ++i)
-    for (int j = int(std::floor((y0 - kMapMargin) / chunk_size)); j < int(std::ceil((y1 + kMapMargin) / chunk_size));
-         ++j)
-      coords.push_back({i, j});
-  return coords;
+    for (int i = int(std::floor((p.x() - kMapMargin) / chunk_size)); i < int(std::ceil((p.x() + kMapMargin) / chunk_size)); ++i)
+      for (int j = int(std::floor((p.y() - kMapMargin) / chunk_size)); j < int(std::ceil((p.y() + kMapMargin) / chunk_size));
+           ++j)
+        coords.insert({i, j});
+  return {coords.begin(), coords.end()};
 }
 
-/// The class map of `schedule`'s world over the chunks under the cameras.
+/// The class map of `schedule`'s world over the chunks under the cameras (at most kMapSize pixels a side).
 world::ClassMap render_map(WorldSchedule& schedule, const RunSetup& setup, const io::Dataset& d,
                            const io::CardCounts& c) {
   const double chunk = setup.world.config.terrain.chunk_size;
   std::vector<ChunkCoord> coords = chunks_under_cameras(c, chunk);
-  const double span = chunk * std::max(coords.back().i - coords.front().i + 1, coords.back().j - coords.front().j + 1);
+  int i0 = coords.front().i, i1 = i0, j0 = coords.front().j, j1 = j0;
+  for (const ChunkCoord& k : coords) i0 = std::min(i0, k.i), i1 = std::max(i1, k.i), j0 = std::min(j0, k.j), j1 = std::max(j1, k.j);
+  const double span = chunk * std::max(i1 - i0 + 1, j1 - j0 + 1);
   const world::BuiltWorld built = schedule.build(std::move(coords));
   return world::render_class_map(built, chunk, *setup.library, d.ontology, std::max(0.25, span / (kMapSize - 40)));
 }
@@ -41,6 +44,9 @@ world::ClassMap render_map(WorldSchedule& schedule, const RunSetup& setup, const
 
 CameraMap camera_map(const io::Dataset& d, const io::CardCounts& c, const CardInputs& in) {
   if (c.positions.empty()) return {std::nullopt, "the dataset has no frames"};
+  for (const Vec3d& p : c.positions)
+    if (std::max(std::abs(p.x()), std::abs(p.y())) > limits::kMaxPoseCoordinate)
+      return {std::nullopt, "a camera lies outside the world Silva builds"};
   if (in.schedule && in.setup) return {render_map(*in.schedule, *in.setup, d, c), ""};
   const std::optional<io::RunMarker> marker = io::read_run_marker(d.dir);
   if (!marker || marker->config.empty()) return {std::nullopt, "the run marker records no config"};

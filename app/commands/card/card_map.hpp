@@ -10,7 +10,7 @@
 
 namespace silva::app {
 
-/// Metres around the cameras' bounding box that the class map under them shows.
+/// Metres around each camera that the class map under them shows (the map's box spans them all).
 inline constexpr double kMapMargin = 16.0;
 /// Side of the pose map's plot, pixels.
 inline constexpr int kMapSize = 480;
@@ -21,7 +21,7 @@ struct CameraMap {
   std::string missing;                 ///< Why there is no map ("" when there is one).
 };
 
-/// The class map of the chunks within kMapMargin of the cameras' bounding box (`c.positions`): from the run's
+/// The class map of the chunks within kMapMargin of a camera (`c.positions`): from the run's
 /// own world when `in` has it, else from the world rebuilt from the config the run marker records, when the
 /// marker's identity (config, asset library, pose file) still holds.
 CameraMap camera_map(const io::Dataset& d, const io::CardCounts& c, const CardInputs& in);
