@@ -101,12 +101,12 @@ fs::path prepare_run_folder(const fs::path& output_dir, int64_t seed, const std:
   if (exists && holds_no_run(run_dir)) {
     // A shard leaves them: another shard may be writing its marker right now.
     if (mode != FolderMode::Shard) remove_temp_files(run_dir);
+  } else if (exists && mode == FolderMode::Overwrite) {
+    empty_dir(run_dir);  // whatever it holds, a corrupt marker included
   } else if (exists) {
     const auto marker = read_run_marker(run_dir);
     const bool same = marker && marker->config_hash == config_hash;
-    if (mode == FolderMode::Overwrite) {
-      empty_dir(run_dir);
-    } else if (!same) {
+    if (!same) {
       throw InputError(run_dir.string() + " holds " +
                        (marker ? std::string("a run with a different config or input files (pose file, asset library)")
                                : std::string("files that are not a Silva run")) +

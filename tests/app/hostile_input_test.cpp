@@ -268,6 +268,14 @@ TEST_F(GenerateErrors, ResumeWithoutSetReadsTheConfigFromTheMarker) {
   EXPECT_EQ(file_differences(folder_files(out_), before_plain_), "");
 }
 
+TEST_F(GenerateErrors, ResumeOfAMissingRunSaysThereIsNothingToResume) {
+  const fs::path empty = dir_ / "never-run";
+  const ProcessResult r = run_silva({"generate", "--resume", "--out", empty.string(), "--seed", "77"}, dir_);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("nothing to resume"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(empty)) << "--resume started a fresh run";
+}
+
 TEST_F(GenerateErrors, SecondWriterIsRefusedNamingThePid) {
   const fs::path slow = dir_ / "slow";
   std::vector<std::string> a = args({"--set", "captures.random_count=400", "--set", R"(captures.sequences=["random"])"});

@@ -64,6 +64,13 @@ TEST(RunFolder, CorruptMarkerIsBadInput) {
   fs::create_directories(run);
   std::ofstream(run / ".silva-run.json") << "{not json";
   EXPECT_THROW(read_run_marker(run), InputError);
+  EXPECT_THROW(prepare_run_folder(run.parent_path(), 1, "h", FolderMode::Resume, ""), InputError);
+  // --overwrite, which the corrupt marker's message advises, empties the folder whatever its marker holds.
+  std::ofstream(run / "old.txt") << "x";
+  EXPECT_EQ(prepare_run_folder(run.parent_path(), 1, "h", FolderMode::Overwrite, ""), run);
+  EXPECT_FALSE(fs::exists(run / "old.txt"));
+  ASSERT_TRUE(read_run_marker(run));
+  EXPECT_EQ(read_run_marker(run)->config_hash, "h");
 }
 
 }  // namespace

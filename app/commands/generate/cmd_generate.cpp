@@ -47,15 +47,18 @@ Shard parse_shard(const std::string& text) {
 }
 
 /// `--resume` with neither --config nor --set: the config the run folder's marker records (so the
-/// interrupt hint `silva generate --resume --out DIR --seed N` continues exactly that run); the
-/// defaults when the folder or the recorded config is missing (the folder checks then say why).
+/// interrupt hint `silva generate --resume --out DIR --seed N` continues exactly that run); the defaults when
+/// the marker records no config. InputError when there is no run folder to resume.
 LoadedConfig config_to_resume(const ConfigSources& sources) {
   LoadedConfig given = load_config(sources);
   const std::string dir = given.config.output.dir;
   const int64_t seed = given.seed_given ? given.config.seed : io::find_resumable_seed(dir);
   const std::filesystem::path run_dir = std::filesystem::path(dir) / io::seed_folder_name(seed);
   const std::optional<io::RunMarker> marker = io::read_run_marker(run_dir);
-  if (!marker || marker->config.empty()) return given;
+  if (!marker)
+    throw InputError(run_dir.string() + ": nothing to resume (no run folder with a .silva-run.json there); drop "
+                     "--resume to start a new run, or name the run with --out and --seed");
+  if (marker->config.empty()) return given;
   LoadedConfig loaded = parse_config_text(marker->config, (run_dir / ".silva-run.json").string());
   loaded.config.output.dir = dir;
   loaded.config.seed = seed;
