@@ -40,7 +40,8 @@ struct ExportOptions {
   static constexpr int kJpegQuality = 95;
   /// The Cityscapes split folder the frames go into: "train", "val" or "test".
   std::string cityscapes_split = "train";
-  /// Called with (frames done, frames in all) as a streaming export (rosbag2) completes each frame; may be empty.
+  /// Called with (frames done, frames in all) by a streaming export (rosbag2): with 0 as it starts, then as it
+  /// completes each frame; may be empty.
   std::function<void(size_t, size_t)> progress;
 };
 

@@ -234,6 +234,7 @@ void export_rosbag2(const Dataset& dataset, const fs::path& out, const ExportOpt
     sequences[s].push_back(i);
   }
   size_t done = 0;
+  if (options.progress) options.progress(0, dataset.frames.size());
   for (const std::string& s : order) write_bag(dataset, s, sequences[s], out / s, options, done);
 }
 

@@ -480,6 +480,8 @@ def check_errors():
     assert "not a Silva dataset" in r.stderr and r.stderr.count("\n") == 1, r.stderr
     r = silva("export", DATASET, "--format", "kitti", expect=2)
     assert "unknown format 'kitti'" in r.stderr and "coco-panoptic" in r.stderr, r.stderr
+    r = silva("export", DATASET, "--format", ",,", "--overwrite", expect=2)
+    assert "--format ',,': unknown format ''" in r.stderr and "--overwrite" not in r.stderr, r.stderr
     target = os.path.join(WORK, "taken")
     os.makedirs(os.path.join(target, "colmap"), exist_ok=True)
     open(os.path.join(target, "colmap", "keep.txt"), "w").write("mine")

@@ -1,9 +1,11 @@
 // `silva export DIR --format F`: convert a finished dataset into the formats other tools load.
 #include <memory>
+#include <sstream>
 
 #include "app/cli/command_options.hpp"
 #include "app/cli/subcommands.hpp"
 #include "app/commands/export/export_command.hpp"
+#include "core/error.hpp"
 #include "io/export_formats.hpp"
 
 namespace silva::app {
@@ -27,13 +29,17 @@ int export_command(const ExportArgs& args) {
   const Reporter reporter(args.output);
   ExportRequest request;
   request.run_dir = args.dir;
-  for (const std::string& name : args.formats) {
-    if (name == "all") {
-      request.all = true;
-      continue;
+  for (const std::string& list : args.formats) {
+    std::stringstream names(list);
+    for (std::string name; std::getline(names, name, ',');) {
+      if (name == "all") {
+        request.all = true;
+        continue;
+      }
+      request.formats.push_back(io::parse_export_format(name, "--format '" + list + "'"));
     }
-    request.formats.push_back(io::parse_export_format(name, "--format"));
   }
+  if (!request.all && request.formats.empty()) throw InputError("--format '" + args.formats.back() + "': names no format");
   request.out_dir = args.out.empty() ? request.run_dir / "export" : std::filesystem::path(args.out);
   request.overwrite = args.overwrite;
   request.options.copy_files = args.copy;
@@ -60,7 +66,6 @@ Handler add_export_command(CLI::App& root) {
                   "(every camera format and rosbag2, and semantickitti when the dataset has lidar; several: "
                   "comma-separated)")
       ->required()
-      ->delimiter(',')
       ->type_name("F");
   cmd->add_option("--out", args->out, "folder that receives one sub-folder per format (default DIR/export)")
       ->type_name("DIR");

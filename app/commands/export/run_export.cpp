@@ -88,11 +88,11 @@ int run_export(const ExportRequest& request, const Reporter& reporter) {
   check_export_location(request.run_dir, request.out_dir, formats);
   const Stopwatch clock;
   io::ExportOptions options = request.options;
-  std::optional<Progress> progress;  // the streaming export (rosbag2) reports frame by frame
-  if (std::find(formats.begin(), formats.end(), io::ExportFormat::Rosbag2) != formats.end()) {
-    progress.emplace(reporter, int(dataset.frames.size()), "frames");
-    options.progress = [&](size_t done, size_t) { progress->update(int(done)); };
-  }
+  std::optional<Progress> progress;  // the streaming export (rosbag2) reports frame by frame, from 0 at its start
+  options.progress = [&](size_t done, size_t total) {
+    if (!progress) progress.emplace(reporter, int(total), "frames");
+    if (done > 0) progress->update(int(done));
+  };
   const nlohmann::json written = export_formats(dataset, formats, request.out_dir, request.overwrite, options);
   if (progress) progress->finish();
   std::string line;
