@@ -15,6 +15,7 @@ os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
+from silva_cli import runner, small_dataset  # noqa: E402
 from silva_dataset import SilvaDataset  # noqa: E402  (the loader's LiDAR read-back, beside the independent reads)
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -23,20 +24,12 @@ DATASET = os.path.join(WORK, "dataset", f"{SEED:010d}")
 EXPORT = os.path.join(WORK, "export")
 
 
-def silva(*args, expect=0):
-    result = subprocess.run([SILVA, *args], capture_output=True, text=True)
-    if result.returncode != expect:
-        sys.exit(f"silva {' '.join(args)}: exit {result.returncode}, expected {expect}\n{result.stderr}")
-    return result
+silva = runner(SILVA)
 
 
 def generate():
-    shutil.rmtree(WORK, ignore_errors=True)
-    silva("generate", "--seed", str(SEED), "--out", os.path.join(WORK, "dataset"), "--quiet",
-          "--set", "output.resolution=96x64", "--set", "captures.autopilot_points=2",
-          "--set", "captures.autopilot_yaws=[0.0]", "--set", "captures.random_count=1",
-          "--set", 'output.types=["rgb","semantic","semantic_color","instance","depth","depth_exr","normal"]',
-          "--set", 'output.formats=["nerfstudio"]')
+    small_dataset(silva, WORK, SEED, "[0.0]", 1, '["rgb","semantic","semantic_color","instance","depth","depth_exr","normal"]',
+                  "--set", 'output.formats=["nerfstudio"]')
 
 
 def frames():

@@ -18,6 +18,7 @@ import time
 os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
+from silva_cli import runner, small_dataset  # noqa: E402
 import yaml  # noqa: E402
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -27,19 +28,11 @@ NODE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__
 PERIOD_NS = 100_000_000
 
 
-def silva(*args, expect=0):
-    result = subprocess.run([SILVA, *args], capture_output=True, text=True)
-    if result.returncode != expect:
-        sys.exit(f"silva {' '.join(args)}: exit {result.returncode}, expected {expect}\n{result.stderr}")
-    return result
+silva = runner(SILVA)
 
 
 def generate():
-    shutil.rmtree(WORK, ignore_errors=True)
-    silva("generate", "--seed", str(SEED), "--out", os.path.join(WORK, "dataset"), "--quiet",
-          "--set", "output.resolution=96x64", "--set", "captures.autopilot_points=2",
-          "--set", "captures.autopilot_yaws=[-30.0,30.0]", "--set", "captures.random_count=2",
-          "--set", 'output.types=["rgb","semantic","instance","depth","depth_exr","lidar"]')
+    small_dataset(silva, WORK, SEED, "[-30.0,30.0]", 2, '["rgb","semantic","instance","depth","depth_exr","lidar"]')
 
 
 def read_bag(path):

@@ -1,0 +1,25 @@
+"""What the Python checks share: running the silva CLI with an expected exit code, and making a small dataset."""
+import os
+import shutil
+import subprocess
+import sys
+
+
+def runner(binary):
+    """A function silva(*args, expect=0) that runs `binary` and exits the test with its stderr on another code."""
+    def silva(*args, expect=0):
+        result = subprocess.run([binary, *args], capture_output=True, text=True)
+        if result.returncode != expect:
+            sys.exit(f"silva {' '.join(args)}: exit {result.returncode}, expected {expect}\n{result.stderr}")
+        return result
+    return silva
+
+
+def small_dataset(silva, work, seed, yaws, random_count, types, *extra):
+    """Empties `work` and generates <work>/dataset/<seed>/ at 96 x 64: two autopilot points at `yaws`, `random_count`
+    random poses, output types `types` (a JSON list), then the further arguments `extra`."""
+    shutil.rmtree(work, ignore_errors=True)
+    silva("generate", "--seed", str(seed), "--out", os.path.join(work, "dataset"), "--quiet",
+          "--set", "output.resolution=96x64", "--set", "captures.autopilot_points=2",
+          "--set", f"captures.autopilot_yaws={yaws}", "--set", f"captures.random_count={random_count}",
+          "--set", f"output.types={types}", *extra)
