@@ -28,11 +28,13 @@ int run_view(const ViewRequest& request, const Reporter& reporter) {
   reporter.note("silva: seed " + std::to_string(explorer.world()->loaded().config.seed) + ", ready in " +
                 std::to_string(int(clock.seconds() * 1000)) + " ms");
   reporter.result({{"ok", true}, {"url", url}, {"port", port}}, "silva view: " + url + " (Ctrl-C to stop)");
+  begin_writing();  // from here a capture may be writing: Ctrl-C stops the server cleanly (a second one at once)
   std::thread serving([&] { server.run(); });
   while (!interrupt_requested()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server.stop();
   serving.join();
-  throw Interrupted("interrupted: the view stopped");
+  throw Interrupted("interrupted: the view stopped (its captures, if any, are complete in " +
+                    explorer.world()->loaded().config.output.dir + ")");
 }
 
 }  // namespace silva::app
