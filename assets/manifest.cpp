@@ -107,17 +107,18 @@ CollisionProxy read_proxy(const Reader& r) {
   const auto* it = std::find(std::begin(kShapeNames), std::end(kShapeNames), shape);
   if (it == std::end(kShapeNames)) r.fail("shape", "must be one of none, cylinder, capsule, box, sphere");
   p.shape = CollisionProxy::Shape(it - std::begin(kShapeNames));
-  constexpr float kMax = float(limits::kMaxAssetCoordinate);
   if (p.shape == CollisionProxy::Shape::None) return p;
   p.center = r.vec3("center");
+  constexpr float kSize = float(limits::kMaxProxySize);
   if (p.shape == CollisionProxy::Shape::Box) {
     p.half_extents = r.vec3("half_extents");
-    if (p.half_extents.minCoeff() <= 0) r.fail("half_extents", "must be positive");
+    if (p.half_extents.minCoeff() <= 0 || p.half_extents.maxCoeff() > kSize)
+      r.fail("half_extents", "must be positive and at most " + std::to_string(int(kSize)) + " m");
     return p;
   }
-  p.radius = r.number("radius", 1e-6f, kMax);
+  p.radius = r.number("radius", 1e-6f, kSize);
   if (p.shape == CollisionProxy::Shape::Sphere) return p;
-  p.height = r.number("height", 0, kMax);
+  p.height = r.number("height", 0, kSize);
   p.axis = r.vec3("axis");
   if (std::abs(p.axis.norm() - 1.0f) > 1e-4f) r.fail("axis", "must be a unit vector");
   return p;

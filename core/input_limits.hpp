@@ -20,6 +20,9 @@ inline constexpr double kMaxPoseCoordinate = 100'000.0;
 inline constexpr double kMaxPoseHeight = 10'000.0;
 /// Largest |coordinate| of an imported asset's vertex or collision proxy, metres.
 inline constexpr double kMaxAssetCoordinate = 1'000.0;
+/// Largest collision proxy of an asset: radius or half extent, and cylinder or capsule length, metres (a fallen
+/// tree's trunk is ~30 m long); larger proxies would make every neighbouring object collide with them.
+inline constexpr double kMaxProxySize = 40.0;
 /// Largest texture an asset may embed or reference, pixels per side.
 inline constexpr int kMaxTextureSide = 16'384;
 /// Placement points one frame may evaluate without --force (2e6 take about a minute on one core).

@@ -108,6 +108,9 @@ TEST_F(ManifestTest, BadManifestsNameTheFileAndKey) {
   expect_error(with(R"("shape": "box")", R"("shape": "cone")"), "assets[0].collision.shape");
   expect_error(with(R"("half_extents": [0.3, 0.2, 0.2])", R"("half_extents": [0.3, 0.2])"),
                "assets[0].collision.half_extents");
+  // In-range coordinates but a proxy every neighbour would collide with (planning ran for minutes).
+  expect_error(with(R"("half_extents": [0.3, 0.2, 0.2])", R"("half_extents": [999, 0.2, 0.2])"),
+               "assets[0].collision.half_extents must be positive and at most 40 m");
   expect_error(with("[0.2, 0.05]", "[0.05, 0.2]"), "assets[0].lod_screen_sizes");
   expect_error(with(R"("file": "r.obj", )", ""), "assets[0] needs exactly one of \"file\" and \"generator\"");
   expect_error(with(R"("parts": {"stone": "obstacle"},)", ""), "assets[0].parts");
