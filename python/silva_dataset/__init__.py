@@ -12,6 +12,7 @@ import os
 os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 
 from .reader import (  # noqa: E402
+    DatasetError,
     SilvaDataset,
     read_camera,
     read_depth,
@@ -23,6 +24,7 @@ from .reader import (  # noqa: E402
 )
 
 __all__ = [
+    "DatasetError",
     "SilvaDataset",
     "read_camera",
     "read_depth",

@@ -6,6 +6,10 @@ import cv2
 import numpy as np
 
 
+class DatasetError(ValueError):
+    """A dataset file that does not hold what the contract says (docs/CONTRACT.md): the message names file and field."""
+
+
 def _imread(path, flags=cv2.IMREAD_UNCHANGED):
     image = cv2.imread(str(path), flags)
     if image is None:
@@ -47,9 +51,19 @@ def read_camera(path):
     plus "world_to_camera" (its inverse)."""
     with open(path) as f:
         cam = json.load(f)
-    cam["K"] = np.array(cam["K"], dtype=np.float64)
-    cam["camera_to_world"] = np.array(cam["camera_to_world"], dtype=np.float64)
-    cam["world_to_camera"] = np.linalg.inv(cam["camera_to_world"])
+    try:
+        K = np.array(cam["K"], dtype=np.float64)
+        c2w = np.array(cam["camera_to_world"], dtype=np.float64)
+    except (KeyError, TypeError, ValueError) as e:
+        raise DatasetError(f"{path}: K or camera_to_world missing or not numbers ({e})") from None
+    if K.shape != (3, 3) or not np.all(np.isfinite(K)) or not (K[0, 0] > 0 and K[1, 1] > 0):
+        raise DatasetError(f"{path}: 'K' must be a finite 3 x 3 matrix with positive focal lengths")
+    R = c2w[:3, :3] if c2w.shape == (4, 4) else None
+    if (R is None or not np.all(np.isfinite(c2w)) or np.abs(R.T @ R - np.eye(3)).max() > 1e-5
+            or np.linalg.det(R) <= 0 or not np.array_equal(c2w[3], [0, 0, 0, 1])):
+        raise DatasetError(f"{path}: 'camera_to_world' must be a finite rigid transform (rotation, last row 0 0 0 1)")
+    cam["K"], cam["camera_to_world"] = K, c2w
+    cam["world_to_camera"] = np.linalg.inv(c2w)
     return cam
 
 
@@ -66,10 +80,16 @@ def read_instance_table(path):
 def read_lidar(bin_path, label_path=None):
     """A LiDAR scan in SemanticKITTI form: N x 4 float32 (x, y, z, intensity) and, when a .label file is given,
     N uint32 labels (class in the lower 16 bits, instance in the upper 16)."""
-    points = np.fromfile(bin_path, dtype=np.float32).reshape(-1, 4)
+    raw = np.fromfile(bin_path, dtype=np.float32)
+    if raw.size % 4:
+        raise DatasetError(f"{bin_path}: not a KITTI scan (4 float32 per point)")
+    points = raw.reshape(-1, 4)
     if label_path is None:
         return points, None
-    return points, np.fromfile(label_path, dtype=np.uint32)
+    labels = np.fromfile(label_path, dtype=np.uint32)
+    if len(labels) != len(points):
+        raise DatasetError(f"{label_path}: {len(labels)} labels for the {len(points)} points of {bin_path}")
+    return points, labels
 
 
 class SilvaDataset:
@@ -87,10 +107,17 @@ class SilvaDataset:
             self.ontology = json.load(f)["classes"]
         self.seed = self.manifest["seed"]
         self.types = self.manifest["config"]["output"]["types"]
+        width, height = (int(v) for v in self.manifest["config"]["output"]["resolution"].split("x"))
+        self.size = (height, width)
         self.frames = []
         for sequence in self.manifest["config"]["captures"]["sequences"]:
-            for frame in range(self.manifest["frames"].get(sequence, 0)):
-                self.frames.append((sequence, frame))
+            count = self.manifest["frames"].get(sequence, 0)
+            if not isinstance(count, int) or isinstance(count, bool) or not 0 <= count <= 1_000_000:
+                raise DatasetError(f"{manifest_path}: frames.{sequence} must be a whole number 0 ... 1000000")
+            last = os.path.join(self.root, sequence, "camera", f"{count - 1:06d}.json")
+            if count and not os.path.isfile(last):
+                raise DatasetError(f"{manifest_path}: frames.{sequence} = {count}, but {last} is missing")
+            self.frames.extend((sequence, frame) for frame in range(count))
 
     def __len__(self):
         return len(self.frames)
@@ -113,8 +140,12 @@ class SilvaDataset:
         sample.update(camera=camera, K=camera["K"], camera_to_world=camera["camera_to_world"])
         if "rgb" in self.types:
             sample["rgb"] = read_rgb(self.path(index, "rgb", "png"))
+        known = np.zeros(256, dtype=bool)
+        known[[c["id"] for c in self.ontology]] = True
         if "semantic" in self.types:
             sample["semantic"] = read_label(self.path(index, "semantic", "png"))
+            if not known[sample["semantic"]].all():
+                raise DatasetError(f"{self.path(index, 'semantic', 'png')}: holds a class id ontology.json lacks")
         if "semantic_color" in self.types:
             sample["semantic_color"] = read_rgb(self.path(index, "semantic_color", "png"))
         if "instance" in self.types:
@@ -126,6 +157,10 @@ class SilvaDataset:
             sample["depth"] = read_depth(self.path(index, "depth", "png"))
         if "normal" in self.types:
             sample["normal"] = read_normal(self.path(index, "normal", "png"))
+        for key in ("rgb", "semantic", "semantic_color", "instance", "depth", "normal"):
+            if key in sample and sample[key].shape[:2] != self.size:
+                raise DatasetError(f"{self.root}: frame {sequence}/{frame:06d}'s {key} is not the run's "
+                                   f"{self.size[1]}x{self.size[0]}")
         lidar = self.path(index, "lidar", "bin")
         if os.path.isfile(lidar):
             label = self.path(index, "lidar_labels", "label")

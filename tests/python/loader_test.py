@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """python/silva_dataset read against independent reads of the same files; `silva card` against a numpy recount.
 
-Usage: loader_test.py SILVA WORKDIR TEST (TEST: loader, card); WORKDIR holds the dataset export_test.py generated.
+Usage: loader_test.py SILVA WORKDIR TEST (TEST: loader, card, damaged); WORKDIR holds the dataset export_test.py generated.
 """
 import json
 import math
@@ -11,7 +11,7 @@ import sys
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(SOURCE, "python"))
-from silva_dataset import SilvaDataset  # noqa: E402  (sets OPENCV_IO_ENABLE_OPENEXR before cv2 loads)
+from silva_dataset import DatasetError, SilvaDataset  # noqa: E402  (sets OPENCV_IO_ENABLE_OPENEXR before cv2 loads)
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -50,6 +50,45 @@ def check_loader():
     except ImportError:
         print("loader: SKIP the torch Dataset (torch is not importable)")
     print(f"loader: {len(ds)} frames read; rgb, K, pose, EXR depth, normals and instance tables agree")
+
+
+def check_damaged():
+    """The loader refuses, naming file and field, what the contract rules out: a manifest count the files do not
+    back, a camera no one can project with, a label image of another size or with a class the ontology lacks."""
+    import shutil
+    work = os.path.join(WORK, "loader-damaged")
+
+    def damaged(edit):
+        copy = os.path.join(work, "0000004242")
+        shutil.rmtree(work, ignore_errors=True)
+        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
+        edit(copy)
+        return copy
+
+    def edit_json(path, change):
+        j = json.load(open(path))
+        change(j)
+        json.dump(j, open(path, "w"))
+
+    camera = lambda d: os.path.join(d, "random", "camera", "000000.json")  # noqa: E731
+    semantic = lambda d: os.path.join(d, "random", "semantic", "000000.png")  # noqa: E731
+    random_index = [i for i, f in enumerate(SilvaDataset(DATASET).frames) if f == ("random", 0)][0]
+    opening = [(lambda d: edit_json(os.path.join(d, "manifest.json"), lambda j: j["frames"].__setitem__("random", 9)),
+                "is missing"),
+               (lambda d: edit_json(os.path.join(d, "manifest.json"), lambda j: j["frames"].__setitem__("random", -1)),
+                "whole number")]
+    reading = [(lambda d: edit_json(camera(d), lambda j: j["K"][0].__setitem__(0, 0.0)), "'K'"),
+               (lambda d: edit_json(camera(d), lambda j: j["camera_to_world"][0].__setitem__(0, 3.0)), "camera_to_world"),
+               (lambda d: cv2.imwrite(semantic(d), np.full((64, 96), 250, np.uint8)), "class id"),
+               (lambda d: cv2.imwrite(semantic(d), np.zeros((10, 10), np.uint8)), "not the run's")]
+    for edit, expected in opening + reading:
+        d = damaged(edit)
+        try:
+            SilvaDataset(d)[random_index]
+            raise AssertionError(f"damaged dataset accepted: expected {expected!r}")
+        except DatasetError as e:
+            assert expected in str(e), str(e)
+    print(f"damaged: {len(opening) + len(reading)} damaged datasets refused by the loader, naming file and field")
 
 
 def check_card():
@@ -95,4 +134,4 @@ def check_card():
     print(f"card: class pixels, instance counts and the depth histogram equal a numpy recount of {len(ds)} frames")
 
 
-{"loader": check_loader, "card": check_card}[TEST]()
+{"loader": check_loader, "card": check_card, "damaged": check_damaged}[TEST]()
