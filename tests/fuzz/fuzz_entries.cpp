@@ -15,6 +15,8 @@
 #include "assets/import_mesh.hpp"
 #include "assets/manifest.hpp"
 #include "core/error.hpp"
+#include "core/png_check.hpp"
+#include "io/camera_json.hpp"
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
@@ -89,10 +91,17 @@ void marker(std::string_view input) {
   io::read_run_marker(scratch());
 }
 
+void camera_json(std::string_view input) { io::parse_camera_json(std::string(input), "camera.json"); }
+
+void png(std::string_view input) {
+  check_png({reinterpret_cast<const uint8_t*>(input.data()), input.size()}, "label.png");
+}
+
 constexpr FuzzTarget kTargets[] = {
     {"config", config_file}, {"set", set_override}, {"pose_json", pose_json}, {"pose_csv", pose_csv},
     {"ontology", ontology},  {"lighting", lighting}, {"library", library},     {"gltf", gltf},
-    {"glb", glb},            {"obj", obj},           {"marker", marker},
+    {"glb", glb},            {"obj", obj},           {"marker", marker},  {"camera_json", camera_json},
+    {"png", png},
 };
 
 }  // namespace
