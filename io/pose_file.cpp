@@ -146,6 +146,9 @@ std::vector<PoseEntry> parse_pose_json(const std::string& text, const std::strin
 std::vector<PoseEntry> parse_pose_csv(const std::string& text, const std::string& source) {
   static const char* kHeader = "x,y,z,yaw_deg,pitch_deg,roll_deg";
   static const char* kColumns[6] = {"x", "y", "z", "yaw_deg", "pitch_deg", "roll_deg"};
+  // UTF-16 (a spreadsheet's "Unicode text") or binary data: say so rather than quote bytes cut at the first NUL.
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF") || text.find('\0') != std::string::npos)
+    throw InputError(source + ": not UTF-8 text (UTF-16 or binary: it holds NUL bytes); save the CSV as UTF-8");
   // A byte-order mark (spreadsheet exports write one) is not part of the header.
   std::stringstream in(std::string(text.starts_with(kUtf8Bom) ? text.substr(kUtf8Bom.size()) : text));
   std::string line;

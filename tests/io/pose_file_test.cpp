@@ -137,6 +137,10 @@ TEST(PoseFile, CsvErrorsNameFileLineAndPose) {
   EXPECT_NE(err("x,y,z,yaw_deg,pitch_deg,roll_deg\n1,2,3,4,5,6x\n").find("roll_deg"), std::string::npos);
   EXPECT_NE(err("x,y,z,yaw_deg,pitch_deg,roll_deg\n").find("no poses"), std::string::npos);
   EXPECT_NE(err("").find("walk.csv"), std::string::npos);
+  // A spreadsheet's "Unicode text": UTF-16 with its byte-order mark; the message says so instead of quoting bytes.
+  std::string utf16 = "\xFF\xFE";
+  for (const char c : std::string("x,y,z,yaw_deg,pitch_deg,roll_deg\n")) utf16 += std::string{c, '\0'};
+  EXPECT_NE(err(utf16).find("not UTF-8 text"), std::string::npos) << err(utf16);
 }
 
 TEST(PoseFile, ReadPicksFormatByExtension) {
