@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <system_error>
 
 #include <opencv2/imgcodecs.hpp>
@@ -42,6 +43,26 @@ void Dataset::require(const std::string& type, const std::string& what) const {
                      "', which this dataset's output.types does not hold");
 }
 
+namespace {
+
+/// The manifest's value at the dotted `path` as T; InputError naming the path unless it is there and `kind`.
+template <class T>
+T manifest_value(const nlohmann::json& manifest, const std::string& path, const std::string& where, const char* kind) {
+  const nlohmann::json* v = &manifest;
+  std::stringstream keys(path);
+  for (std::string key; std::getline(keys, key, '.');) {
+    if (!v->is_object() || !v->contains(key)) throw InputError(where + ": " + path + " is missing");
+    v = &(*v)[key];
+  }
+  try {
+    return v->get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(where + ": " + path + " must be " + kind);
+  }
+}
+
+}  // namespace
+
 Dataset open_dataset(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -55,29 +76,27 @@ Dataset open_dataset(const fs::path& dir) {
   d.dir = dir;
   const std::string where = (dir / "manifest.json").string();
   d.manifest = parse_json_text(read_text_file(dir / "manifest.json"), where);
-  try {
-    d.seed = d.manifest.at("seed").get<int64_t>();
-    d.types = d.manifest.at("config").at("output").at("types").get<std::vector<std::string>>();
-    const auto sequences = d.manifest.at("config").at("captures").at("sequences").get<std::vector<std::string>>();
-    const std::string resolution = d.manifest.at("config").at("output").at("resolution").get<std::string>();
-    if (std::sscanf(resolution.c_str(), "%dx%d", &d.width, &d.height) != 2 || d.width < 1 || d.height < 1 ||
-        d.width > 8192 || d.height > 8192)
-      throw InputError(where + ": config.output.resolution '" + limits::quoted_prefix(resolution) +
-                       "' is not WxH within 1 ... 8192");
-    const nlohmann::json& counts = d.manifest.at("frames");
-    int global = 0;
-    for (const std::string& s : sequences) {
-      const int n = counts.contains(s) ? int(json_int(counts, s, 0, limits::kMaxFramesPerSequence, where + ": frames"))
-                                       : 0;
-      // The count is only trusted as far as the files go: its last camera file must be there.
-      const fs::path last = dir / s / frame_file("camera", n - 1, "json");
-      if (n > 0 && !fs::is_regular_file(last, ec))
-        throw InputError(where + ": frames." + s + " = " + std::to_string(n) + ", but " + last.string() +
-                         " is missing (a damaged or unfinished dataset)");
-      for (int f = 0; f < n; ++f) d.frames.push_back({s, f, global++});
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(where + ": not a Silva manifest (" + std::string(e.what()) + ")");
+  d.seed = manifest_value<int64_t>(d.manifest, "seed", where, "a whole number");
+  d.types = manifest_value<std::vector<std::string>>(d.manifest, "config.output.types", where, "a list of names");
+  const auto sequences =
+      manifest_value<std::vector<std::string>>(d.manifest, "config.captures.sequences", where, "a list of names");
+  const auto resolution = manifest_value<std::string>(d.manifest, "config.output.resolution", where, "\"WxH\"");
+  if (std::sscanf(resolution.c_str(), "%dx%d", &d.width, &d.height) != 2 || d.width < 1 || d.height < 1 ||
+      d.width > 8192 || d.height > 8192)
+    throw InputError(where + ": config.output.resolution '" + limits::quoted_prefix(resolution) +
+                     "' is not WxH within 1 ... 8192");
+  const auto counts = manifest_value<nlohmann::json>(d.manifest, "frames", where, "an object");
+  if (!counts.is_object()) throw InputError(where + ": frames must be an object of counts per sequence");
+  int global = 0;
+  for (const std::string& s : sequences) {
+    const int n = counts.contains(s) ? int(json_int(counts, s, 0, limits::kMaxFramesPerSequence, where + ": frames"))
+                                     : 0;
+    // The count is only trusted as far as the files go: its last camera file must be there.
+    const fs::path last = dir / s / frame_file("camera", n - 1, "json");
+    if (n > 0 && !fs::is_regular_file(last, ec))
+      throw InputError(where + ": frames." + s + " = " + std::to_string(n) + ", but " + last.string() +
+                       " is missing (a damaged or unfinished dataset)");
+    for (int f = 0; f < n; ++f) d.frames.push_back({s, f, global++});
   }
   d.ontology = load_ontology(dir / "ontology.json");
   return d;

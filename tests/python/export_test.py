@@ -539,6 +539,9 @@ def check_damaged():
         (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", -1)), "frames"),
         (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", "x")), "frames"),
         (lambda d: edit_json(manifest(d), lambda j: j["frames"].__setitem__("random", 50)), "is missing"),
+        (lambda d: edit_json(manifest(d), lambda j: j["config"]["output"].__setitem__("types", "rgb")),
+         "config.output.types must be a list of names"),
+        (lambda d: edit_json(manifest(d), lambda j: j.pop("seed")), "manifest.json: seed is missing"),
     ]
     readers = ("export", "card", "verify")
     cases = [(edit, expected, readers) for edit, expected in cases]
