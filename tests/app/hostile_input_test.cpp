@@ -268,6 +268,16 @@ TEST_F(GenerateErrors, ResumeWithoutSetReadsTheConfigFromTheMarker) {
   EXPECT_EQ(file_differences(folder_files(out_), before_plain_), "");
 }
 
+TEST_F(GenerateErrors, ResumeRewritesAFrameWhoseOutputFileWasDeleted) {
+  // merge's hint for a missing file is "rerun its shard": the rerun must write the frame again, not skip it
+  // because its camera file is still there.
+  const fs::path run = out_ / "0000002024";
+  fs::remove(run / "random" / "semantic" / "000001.png");
+  const ProcessResult r = run_silva({"generate", "--resume", "--out", out_.string(), "--seed", "2024"}, dir_);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(file_differences(folder_files(out_), before_plain_), "");
+}
+
 TEST_F(GenerateErrors, ResumeOfAMissingRunSaysThereIsNothingToResume) {
   const fs::path empty = dir_ / "never-run";
   const ProcessResult r = run_silva({"generate", "--resume", "--out", empty.string(), "--seed", "77"}, dir_);

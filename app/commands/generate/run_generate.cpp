@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
+#include "io/capture_set.hpp"
 #include "io/lidar_files.hpp"
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
@@ -44,15 +45,24 @@ std::string shard_record_name(const Shard& s) {
   return "run.shard-" + std::to_string(s.index) + "-of-" + std::to_string(s.count) + ".json";
 }
 
-/// The planned frames this run captures: its shard's, less those already complete in `run_dir`
-/// (counted in `skipped`).
+/// True when every file of frame `f` is in `run_dir`: its camera file (written last) and each selected output's.
+bool frame_complete(const world::PlannedFrame& f, const io::OutputSelection& outputs, const fs::path& run_dir) {
+  std::error_code ec;
+  if (!fs::is_regular_file(run_dir / systems::camera_file(f), ec)) return false;
+  for (const std::string& file : io::frame_file_names(outputs, f.frame))
+    if (!fs::is_regular_file(run_dir / f.sequence / file, ec)) return false;
+  return true;
+}
+
+/// The planned frames this run captures: its shard's, less those already complete in `run_dir` (counted in
+/// `skipped`); a frame with any file missing (deleted after it was written) is captured again.
 std::vector<world::PlannedFrame> frames_to_capture(const std::vector<world::PlannedFrame>& plan,
-                                                  const GenerateRequest& request, const fs::path& run_dir,
-                                                  int& skipped) {
+                                                  const GenerateRequest& request, const io::OutputSelection& outputs,
+                                                  const fs::path& run_dir, int& skipped) {
   std::vector<world::PlannedFrame> frames;
   for (const auto& f : plan) {
     if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
-    if (fs::exists(run_dir / systems::camera_file(f))) {
+    if (frame_complete(f, outputs, run_dir)) {
       ++skipped;
       continue;
     }
@@ -146,7 +156,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   if (outputs.has(io::OutputType::Lidar)) write_lidar_sequence_files(plan, run_dir, cfg);
 
   int skipped = 0;
-  const std::vector<world::PlannedFrame> frames = frames_to_capture(plan, request, run_dir, skipped);
+  const std::vector<world::PlannedFrame> frames = frames_to_capture(plan, request, outputs, run_dir, skipped);
   reporter.note("silva: capturing " + std::to_string(frames.size()) + " frames at " +
                 std::to_string(cfg.output.width) + "x" + std::to_string(cfg.output.height) + " into " +
                 run_dir.string() + (skipped ? " (" + std::to_string(skipped) + " already complete)" : ""));
