@@ -133,7 +133,7 @@ cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
 
 cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int type) const {
   const fs::path path = file(f, folder, "png");
-  const cv::Mat m = read_image(path, type, cv::Mat(height, width, CV_8UC1));
+  cv::Mat m = read_image(path, type, cv::Mat(height, width, CV_8UC1));
   if (folder == "semantic") {
     std::array<bool, 256> known{};
     for (const OntologyClass& c : ontology.classes) known[c.id] = true;
