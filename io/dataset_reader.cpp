@@ -61,6 +61,13 @@ T manifest_value(const nlohmann::json& manifest, const std::string& path, const 
   }
 }
 
+/// Which class ids (0 ... 255) the ontology defines.
+std::array<bool, 256> class_ids(const Ontology& ontology) {
+  std::array<bool, 256> known{};
+  for (const OntologyClass& c : ontology.classes) known[c.id] = true;
+  return known;
+}
+
 }  // namespace
 
 Dataset open_dataset(const fs::path& dir) {
@@ -135,8 +142,7 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
   const fs::path path = file(f, folder, "png");
   cv::Mat m = read_image(path, type, cv::Mat(height, width, CV_8UC1));
   if (folder == "semantic") {
-    std::array<bool, 256> known{};
-    for (const OntologyClass& c : ontology.classes) known[c.id] = true;
+    const std::array<bool, 256> known = class_ids(ontology);
     for (int y = 0; y < m.rows; ++y) {
       const uint8_t* row = m.ptr<uint8_t>(y);
       for (int x = 0; x < m.cols; ++x)
@@ -158,10 +164,9 @@ std::vector<uint32_t> Dataset::lidar_labels(const DatasetFrame& f) const {
   if (ec || labels.size() != points)
     throw InputError(path.string() + ": " + std::to_string(labels.size()) + " labels for the " + std::to_string(points) +
                      " points of " + scan.filename().string());
-  std::array<bool, 65536> known{};
-  for (const OntologyClass& c : ontology.classes) known[c.id] = true;
+  const std::array<bool, 256> known = class_ids(ontology);
   for (size_t i = 0; i < labels.size(); ++i)
-    if (!known[labels[i] & 0xFFFFu])
+    if ((labels[i] & 0xFFFFu) > 255 || !known[labels[i] & 0xFFu])
       throw InputError(path.string() + ": point " + std::to_string(i) + " holds class " +
                        std::to_string(labels[i] & 0xFFFFu) + ", which ontology.json does not define");
   return labels;

@@ -15,7 +15,7 @@ os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "python"))
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
-from silva_cli import runner, small_dataset  # noqa: E402
+from silva_cli import damaged_copy, edit_json, runner, small_dataset  # noqa: E402
 from silva_dataset import SilvaDataset  # noqa: E402  (the loader's LiDAR read-back, beside the independent reads)
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -516,18 +516,6 @@ def check_damaged():
     export, card and verify with exit 2 and one line naming the file, where they crashed, hung or wrote nan."""
     work = os.path.join(WORK, "damaged")
 
-    def damaged(edit):
-        copy = os.path.join(work, f"{SEED:010d}")
-        shutil.rmtree(work, ignore_errors=True)
-        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
-        edit(copy)
-        return copy
-
-    def edit_json(path, change):
-        j = json.load(open(path))
-        change(j)
-        json.dump(j, open(path, "w"))
-
     camera = lambda d: os.path.join(d, "random", "camera", "000000.json")  # noqa: E731
     manifest = lambda d: os.path.join(d, "manifest.json")  # noqa: E731
     cases = [
@@ -572,7 +560,7 @@ def check_damaged():
     commands = {"export": ["export", None, "--format", "colmap"], "export-coco": ["export", None, "--format",
                 "coco-panoptic"], "card": ["card", None], "verify": ["verify", None, "--sample", "0.01"]}
     for edit, expected, which in cases:
-        d = damaged(edit)
+        d = damaged_copy(DATASET, work, edit)
         for command in ([d if a is None else a for a in commands[w]] for w in which):
             r = silva(*command, "--quiet", expect=2)
             assert expected in r.stderr and r.stderr.count("\n") == 1, (command, r.stderr)

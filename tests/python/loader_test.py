@@ -14,6 +14,7 @@ sys.path.insert(0, os.path.join(SOURCE, "python"))
 from silva_dataset import DatasetError, SilvaDataset  # noqa: E402  (sets OPENCV_IO_ENABLE_OPENEXR before cv2 loads)
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
+from silva_cli import damaged_copy, edit_json  # noqa: E402
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
 DATASET = os.path.join(WORK, "dataset", "0000004242")
@@ -55,20 +56,7 @@ def check_loader():
 def check_damaged():
     """The loader refuses, naming file and field, what the contract rules out: a manifest count the files do not
     back, a camera no one can project with, a label image of another size or with a class the ontology lacks."""
-    import shutil
     work = os.path.join(WORK, "loader-damaged")
-
-    def damaged(edit):
-        copy = os.path.join(work, "0000004242")
-        shutil.rmtree(work, ignore_errors=True)
-        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
-        edit(copy)
-        return copy
-
-    def edit_json(path, change):
-        j = json.load(open(path))
-        change(j)
-        json.dump(j, open(path, "w"))
 
     camera = lambda d: os.path.join(d, "random", "camera", "000000.json")  # noqa: E731
     semantic = lambda d: os.path.join(d, "random", "semantic", "000000.png")  # noqa: E731
@@ -82,7 +70,7 @@ def check_damaged():
                (lambda d: cv2.imwrite(semantic(d), np.full((64, 96), 250, np.uint8)), "class id"),
                (lambda d: cv2.imwrite(semantic(d), np.zeros((10, 10), np.uint8)), "not the run's")]
     for edit, expected in opening + reading:
-        d = damaged(edit)
+        d = damaged_copy(DATASET, work, edit)
         try:
             SilvaDataset(d)[random_index]
             raise AssertionError(f"damaged dataset accepted: expected {expected!r}")

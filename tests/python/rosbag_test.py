@@ -18,7 +18,7 @@ import time
 os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
-from silva_cli import runner, small_dataset  # noqa: E402
+from silva_cli import damaged_copy, edit_json, runner, small_dataset  # noqa: E402
 import yaml  # noqa: E402
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -210,12 +210,7 @@ def damaged():
         data.tofile(labels(d))
 
     def manifest_edit(change):
-        def edit(d):
-            path = os.path.join(d, "manifest.json")
-            j = json.load(open(path))
-            change(j)
-            json.dump(j, open(path, "w"))
-        return edit
+        return lambda d: edit_json(os.path.join(d, "manifest.json"), change)
 
     def write(name, text):
         return lambda d: open(os.path.join(d, sequence, name), "w").write(text)
@@ -229,10 +224,7 @@ def damaged():
          ("semantickitti",)),
     ]
     for edit, expected, readers in cases:
-        copy = os.path.join(work, f"{SEED:010d}")
-        shutil.rmtree(work, ignore_errors=True)
-        shutil.copytree(DATASET, copy, ignore=shutil.ignore_patterns("export", "card_*"))
-        edit(copy)
+        copy = damaged_copy(DATASET, work, edit)
         for reader in readers:
             args = ["card", copy] if reader == "card" else ["export", copy, "--format", reader]
             r = silva(*args, "--quiet", expect=2)

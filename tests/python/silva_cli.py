@@ -1,4 +1,5 @@
-"""What the Python checks share: running the silva CLI with an expected exit code, and making a small dataset."""
+"""What the Python checks share: running the silva CLI, making a small dataset, and damaging copies of one."""
+import json
 import os
 import shutil
 import subprocess
@@ -23,3 +24,22 @@ def small_dataset(silva, work, seed, yaws, random_count, types, *extra):
           "--set", "output.resolution=96x64", "--set", "captures.autopilot_points=2",
           "--set", f"captures.autopilot_yaws={yaws}", "--set", f"captures.random_count={random_count}",
           "--set", f"output.types={types}", *extra)
+
+
+def damaged_copy(dataset, work, edit):
+    """A fresh copy of `dataset` under `work` (same folder name; exports and card charts left out) after `edit(copy)`
+    damaged it; returns the copy's path."""
+    copy = os.path.join(work, os.path.basename(dataset))
+    shutil.rmtree(work, ignore_errors=True)
+    shutil.copytree(dataset, copy, ignore=shutil.ignore_patterns("export", "card_*"))
+    edit(copy)
+    return copy
+
+
+def edit_json(path, change):
+    """Rewrites the JSON file `path` after `change(document)`."""
+    with open(path) as f:
+        document = json.load(f)
+    change(document)
+    with open(path, "w") as f:
+        json.dump(document, f)

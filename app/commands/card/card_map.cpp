@@ -8,7 +8,6 @@
 #include "pipeline/config/run_setup.hpp"
 #include "pipeline/schedule/world_schedule.hpp"
 #include "core/error.hpp"
-#include "core/input_limits.hpp"
 #include "io/run_folder.hpp"
 #include "app/cli/pipeline_names.hpp"
 
@@ -44,9 +43,6 @@ world::ClassMap render_map(WorldSchedule& schedule, const RunSetup& setup, const
 
 CameraMap camera_map(const io::Dataset& d, const io::CardCounts& c, const CardInputs& in) {
   if (c.positions.empty()) return {std::nullopt, "the dataset has no frames"};
-  for (const Vec3d& p : c.positions)
-    if (std::max(std::abs(p.x()), std::abs(p.y())) > limits::kMaxPoseCoordinate)
-      return {std::nullopt, "a camera lies outside the world Silva builds"};
   if (in.schedule && in.setup) return {render_map(*in.schedule, *in.setup, d, c), ""};
   const std::optional<io::RunMarker> marker = io::read_run_marker(d.dir);
   if (!marker || marker->config.empty()) return {std::nullopt, "the run marker records no config"};
