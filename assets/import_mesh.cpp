@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -17,6 +18,7 @@
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "assets/gltf_triangles.hpp"
 #include "core/error.hpp"
 #include "core/input_limits.hpp"
 #include "core/png_check.hpp"
@@ -55,6 +57,7 @@ class AssetImporter {
       fail(std::string("cannot be read: ") + importer_.GetErrorString());
     // Checked as the file states them: joining identical vertices would merge a NaN into another one.
     check_file_vertices();
+    check_declared_triangles();
     scene_ = importer_.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                            aiProcess_GenSmoothNormals | aiProcess_FlipUVs | aiProcess_SortByPType);
     if (scene_ == nullptr) fail(std::string("cannot be read: ") + importer_.GetErrorString());
@@ -101,6 +104,19 @@ class AssetImporter {
                  std::to_string(am.mFaces[f].mIndices[k]) + " (the mesh has " + std::to_string(am.mNumVertices) +
                  " vertices)");
     }
+  }
+
+  /// Every triangle a glTF file declares was read: assimp skips a face with an out-of-range vertex index
+  /// without an error.
+  void check_declared_triangles() const {
+    const std::optional<uint64_t> declared = gltf_declared_triangles(file_);
+    if (!declared) return;
+    uint64_t read = 0;
+    for (unsigned m = 0; m < scene_->mNumMeshes; ++m)
+      for (unsigned f = 0; f < scene_->mMeshes[m]->mNumFaces; ++f) read += scene_->mMeshes[m]->mFaces[f].mNumIndices == 3;
+    if (read < *declared)
+      fail("declares " + std::to_string(*declared) + " triangles, " + std::to_string(*declared - read) +
+           " of them with a vertex index past the end of its primitive's vertices");
   }
 
   static aiMatrix4x4 global_transform(const aiNode& node) {

@@ -112,8 +112,9 @@ httplib::Server::Handler bounded_handler(Route route, std::atomic<int>& counter,
 ViewServer::ViewServer(const fs::path& page_dir)
     : server_(std::make_unique<httplib::Server>()), token_(random_token()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kServerThreads); };
-  server_->set_read_timeout(5, 0);
-  server_->set_write_timeout(5, 0);
+  server_->set_read_timeout(kReadTimeoutSeconds, 0);
+  server_->set_write_timeout(kReadTimeoutSeconds, 0);
+  server_->set_keep_alive_max_count(1);  // one request per connection: a slow client cannot keep its thread
   server_->set_payload_max_length(kMaxBodyBytes);
   for (const char* name : kPageFiles) {
     const fs::path file = page_dir / name;

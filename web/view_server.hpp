@@ -38,8 +38,11 @@ using Route = std::function<Reply(const Request&)>;
 /// The files of the page, served at "/" (index.html), "/view.js" and "/view.css".
 inline constexpr const char* kPageFiles[] = {"index.html", "view.js", "view.css"};
 
-/// Worker threads answering requests.
-inline constexpr int kServerThreads = 4;
+/// Worker threads answering requests: a connection holds one while its request arrives, so several slow
+/// clients (kReadTimeoutSeconds between bytes at most) cannot hold every thread.
+inline constexpr int kServerThreads = 32;
+/// Longest wait for the next bytes of a request, or for a client to take the answer, seconds.
+inline constexpr int kReadTimeoutSeconds = 2;
 /// The header a state-changing (POST) request carries the launch token in.
 inline constexpr const char* kTokenHeader = "X-Silva-Token";
 /// Largest request body accepted, bytes.

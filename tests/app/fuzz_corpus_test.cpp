@@ -39,7 +39,8 @@ TEST(FuzzCorpus, SeedsOfTheShippedFilesAreAccepted) {
       {"config", "demo.toml"},        {"pose_json", "example.json"}, {"pose_csv", "example.csv"},
       {"ontology", "ontology.json"},  {"lighting", "lighting.toml"}, {"obj", "tetra.obj"},
       {"gltf", "triangle.gltf"},      {"glb", "triangle.glb"},       {"marker", "marker.json"},
-      {"set", "float"}};
+      {"set", "float"},               {"camera_json", "autopilot_000000.json"}, {"png", "semantic_96x64.png"},
+      {"manifest", "valid.json"},     {"label_png", "semantic_16x12.png"},      {"label_png", "instance_16x12.png"}};
   for (const auto& [name, file] : valid) {
     for (const FuzzTarget& target : fuzz_targets()) {
       if (std::string(target.name) != name) continue;

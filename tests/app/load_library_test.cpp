@@ -225,6 +225,14 @@ fs::path user_obj_library(const fs::path& root, const std::string& name, const s
   return d / "library.json";
 }
 
+/// A binary glTF of JSON chunk `json` (padded with spaces) and binary chunk `bin`.
+std::string glb_container(const std::string& json, const std::string& bin) {
+  const std::string chunk = json + std::string((4 - json.size() % 4) % 4, ' ');
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  return u32(0x46546C67) + u32(2) + u32(uint32_t(12 + 8 + chunk.size() + 8 + bin.size())) + u32(uint32_t(chunk.size())) +
+         u32(0x4E4F534A) + chunk + u32(uint32_t(bin.size())) + u32(0x004E4942) + bin;
+}
+
 /// A binary glTF of one triangle with the given corner positions and material "granite".
 std::string triangle_glb(const std::array<float, 9>& corners) {
   const std::string json =
@@ -232,11 +240,7 @@ std::string triangle_glb(const std::array<float, 9>& corners) {
       R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"materials":[{"name":"granite"}],)"
       R"("buffers":[{"byteLength":36}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
       R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]})";
-  std::string chunk = json + std::string((4 - json.size() % 4) % 4, ' ');
-  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
-  const std::string bin(reinterpret_cast<const char*>(corners.data()), 36);
-  return u32(0x46546C67) + u32(2) + u32(uint32_t(12 + 8 + chunk.size() + 8 + bin.size())) + u32(uint32_t(chunk.size())) +
-         u32(0x4E4F534A) + chunk + u32(uint32_t(bin.size())) + u32(0x004E4942) + bin;
+  return glb_container(json, std::string(reinterpret_cast<const char*>(corners.data()), 36));
 }
 
 TEST_F(LoadLibraryTest, CorruptUserAssetsNameFileAndField) {
@@ -270,6 +274,32 @@ TEST_F(LoadLibraryTest, BinaryGltfChunkLongerThanTheFileIsRefusedBeforeAssimp) {
   std::memcpy(&glb[8], &claim, 4);  // the header's total length wrong as well: that is named first
   std::ofstream(d / "a.glb", std::ios::binary | std::ios::trunc) << glb;
   expect_error(d / "library.json", {"a.glb", "header gives 4294902400 bytes"});
+}
+
+TEST_F(LoadLibraryTest, GltfFaceIndexPastTheVerticesIsRefusedNotDropped) {
+  // Two indexed triangles over three vertices, the second's last index 4e9: assimp drops that face silently.
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],)"
+      R"("materials":[{"name":"granite"}],"buffers":[{"byteLength":60}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},)"
+      R"({"bufferView":1,"componentType":5125,"count":6,"type":"SCALAR"}]})";
+  const std::array<float, 9> corners = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const auto glb = [&](uint32_t last_index) {
+    const std::array<uint32_t, 6> indices = {0, 1, 2, 0, 1, last_index};
+    return glb_container(json, std::string(reinterpret_cast<const char*>(corners.data()), 36) +
+                                   std::string(reinterpret_cast<const char*>(indices.data()), 24));
+  };
+  const fs::path d = *dir_ / "far_index";
+  fs::create_directories(d);
+  std::ofstream(d / "library.json") << R"({"format": "silva-asset-library", "version": 1, "assets": [
+    {"name": "a", "file": "a.glb", "kind": "rock", "class": "obstacle", "parts": {"granite": "obstacle"},
+     "collision": {"shape": "sphere", "center": [0, 0, 1], "radius": 1}, "lod_screen_sizes": []}]})";
+  std::ofstream(d / "a.glb", std::ios::binary) << glb(4000000000u);
+  expect_error(d / "library.json", {"a.glb", "declares 2 triangles, 1 of them with a vertex index past the end"});
+  std::ofstream(d / "a.glb", std::ios::binary | std::ios::trunc) << glb(2);
+  EXPECT_NO_THROW(load_library(d / "library.json"));
 }
 
 TEST_F(LoadLibraryTest, HugeTextureIsRefusedBeforeDecoding) {

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <string_view>
 
 #include <toml++/toml.h>
 
@@ -15,8 +16,10 @@
 #include "assets/import_mesh.hpp"
 #include "assets/manifest.hpp"
 #include "core/error.hpp"
+#include "core/ontology.hpp"
 #include "core/png_check.hpp"
 #include "io/camera_json.hpp"
+#include "io/dataset_reader.hpp"
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
@@ -37,10 +40,15 @@ const fs::path& scratch() {
   return dir;
 }
 
+/// Writes `input` to `path`, replacing it.
+void write_file(const fs::path& path, std::string_view input) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc).write(input.data(), std::streamsize(input.size()));
+}
+
 /// Writes `input` to `name` in the scratch folder; returns its path.
 fs::path scratch_file(const std::string& name, std::string_view input) {
   const fs::path path = scratch() / name;
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(input.data(), std::streamsize(input.size()));
+  write_file(path, input);
   return path;
 }
 
@@ -97,11 +105,48 @@ void png(std::string_view input) {
   check_png({reinterpret_cast<const uint8_t*>(input.data()), input.size()}, "label.png");
 }
 
+/// A finished dataset folder of two 16x12 "random" frames (marker, ontology, camera files) whose
+/// manifest.json is `manifest`; made once per process, the manifest rewritten on every call.
+const fs::path& dataset_folder(std::string_view manifest) {
+  static const fs::path dir = [] {
+    const fs::path run = io::prepare_run_folder(scratch() / "dataset", 1, "fuzz", io::FolderMode::Overwrite);
+    std::ofstream(run / "ontology.json") << io::ontology_json(default_ontology());
+    fs::create_directories(run / "random" / "camera");
+    fs::create_directories(run / "random" / "semantic");
+    fs::create_directories(run / "random" / "instance");
+    for (const char* f : {"000000.json", "000001.json"}) std::ofstream(run / "random" / "camera" / f) << "{}";
+    return run;
+  }();
+  write_file(dir / "manifest.json", manifest);
+  return dir;
+}
+
+/// The manifest of a 16x12 dataset with two random frames of semantic and instance labels.
+constexpr std::string_view kLabelManifest =
+    R"({"seed": 1, "frames": {"random": 2}, "config": {"output": {"resolution": "16x12", "types": ["semantic",)"
+    R"( "instance"]}, "captures": {"sequences": ["random"]}}})";
+
+/// A damaged manifest.json of a dataset folder.
+void dataset_manifest(std::string_view input) { io::open_dataset(dataset_folder(input)); }
+
+/// A label PNG as frame 0's semantic image (8-bit class ids) and, when refused as that, as its instance image
+/// (16-bit indices).
+void label_png(std::string_view input) {
+  const io::Dataset d = io::open_dataset(dataset_folder(kLabelManifest));
+  write_file(d.file(d.frames[0], "semantic", "png"), input);
+  write_file(d.file(d.frames[0], "instance", "png"), input);
+  try {
+    d.image(d.frames[0], "semantic", CV_8UC1);
+  } catch (const InputError&) {
+    d.image(d.frames[0], "instance", CV_16UC1);
+  }
+}
+
 constexpr FuzzTarget kTargets[] = {
     {"config", config_file}, {"set", set_override}, {"pose_json", pose_json}, {"pose_csv", pose_csv},
     {"ontology", ontology},  {"lighting", lighting}, {"library", library},     {"gltf", gltf},
     {"glb", glb},            {"obj", obj},           {"marker", marker},  {"camera_json", camera_json},
-    {"png", png},
+    {"png", png},            {"manifest", dataset_manifest}, {"label_png", label_png},
 };
 
 }  // namespace

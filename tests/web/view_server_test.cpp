@@ -7,7 +7,12 @@
 #include <fstream>
 #include <future>
 #include <thread>
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
+
+#include <vector>
 
 #include "tests/common/scratch_dirs.hpp"
 #include "web/view_server.hpp"
@@ -97,6 +102,32 @@ TEST(ViewServer, BusyRouteDropsRequestsInsteadOfQueueing) {
   release.set_value();
   EXPECT_EQ(first.get(), 200);
   EXPECT_EQ(entered, 1) << "the dropped request must not run the route";
+}
+
+TEST(ViewServer, ClientsTricklingHeadersDoNotHoldUpOthers) {
+  RunningServer s(page_dir());
+  s.server.get("/state", [](const Request&) { return Reply{200, "text/plain", "ok", {}}; });
+  s.start();
+  // Eight connections that send half a request line and then a byte at a time, slower than any client would.
+  std::vector<int> slow;
+  for (int i = 0; i < 8; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(uint16_t(s.port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr), 0);
+    ASSERT_EQ(::send(fd, "GET /sta", 8, 0), 8);
+    slow.push_back(fd);
+  }
+  std::this_thread::sleep_for(200ms);
+  for (int fd : slow) ::send(fd, "t", 1, 0);
+  httplib::Client client("127.0.0.1", s.port);
+  client.set_read_timeout(1, 0);  // shorter than kReadTimeoutSeconds: the slow clients must not be waited for
+  const auto r = client.Get("/state");
+  ASSERT_TRUE(r) << "a trickling client held up /state";
+  EXPECT_EQ(r->body, "ok");
+  for (int fd : slow) ::close(fd);
 }
 
 TEST(ViewServer, AThrowingRouteAnswers500) {
