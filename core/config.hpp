@@ -123,6 +123,19 @@ struct LidarConfig {
   bool motion_distortion = false;                   ///< lidar.motion_distortion: autopilot sweeps move along the trail
 };
 
+/// The continuous `trajectory` sequence and its IMU (`[trajectory]`).
+struct TrajectoryConfig {
+  double speed = 1.4;               ///< trajectory.speed (m/s along the trail)
+  double duration_s = 60;           ///< trajectory.duration_s (seconds)
+  double start_m = 0;               ///< trajectory.start_m (arc length along the trail where it starts, m)
+  double camera_hz = 10;            ///< trajectory.camera_hz (frames per second)
+  double imu_hz = 200;              ///< trajectory.imu_hz (IMU samples per second)
+  double bob_m = 0.02;              ///< trajectory.bob_m (height bob of the walk, amplitude, m)
+  double sway_deg = 1.0;            ///< trajectory.sway_deg (roll sway of the walk, amplitude, degrees)
+  double step_hz = 1.8;             ///< trajectory.step_hz (steps per second: the bob's frequency; sway at half)
+  std::string imu_noise = "adis16448";  ///< trajectory.imu_noise: "adis16448" (EuRoC's IMU) or "none"
+};
+
 /// Every config key, resolved (defaults = thesis defaults).
 struct Config {
   int64_t seed = 0;          ///< seed (0..9 999 999 999); drawn from the clock when absent
@@ -136,6 +149,7 @@ struct Config {
   WorldConfig world;         ///< [world]
   RenderConfig render;       ///< [render]
   LidarConfig lidar;         ///< [lidar]
+  TrajectoryConfig trajectory;  ///< [trajectory]
 };
 
 }  // namespace silva

@@ -27,6 +27,7 @@ enum class Purpose : uint32_t {
   WeatherOverlay = 42,
   LidarNoise = 43,
   LightingRandomize = 44,
+  ImuNoise = 45,
   VerifySample = 50,
   Test = 1000,
 };

@@ -32,7 +32,7 @@ struct LightingRecord {
 /// Everything a camera file holds.
 struct CameraRecord {
   int frame = 0;                        ///< Frame number within the sequence.
-  std::string sequence;                 ///< "autopilot", "random" or "custom".
+  std::string sequence;                 ///< "autopilot", "random", "custom" or "trajectory".
   Perspective perspective = Perspective::Ground;  ///< Ground or aerial capture.
   Camera camera;                        ///< Resolution, K, camera_to_world, near, far.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).

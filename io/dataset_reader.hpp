@@ -18,7 +18,7 @@ namespace silva::io {
 
 /// One captured frame of a dataset.
 struct DatasetFrame {
-  std::string sequence;  ///< "autopilot", "random" or "custom".
+  std::string sequence;  ///< "autopilot", "random", "custom" or "trajectory".
   int frame = 0;         ///< Frame number within the sequence.
   int global_index = 0;  ///< Sequences in config order, then frame number, from 0 (CONTRACT.md --shard).
   /// "<sequence>_<frame as %06d>", the file stem the exports use.

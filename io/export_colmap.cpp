@@ -12,18 +12,11 @@
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/export_formats.hpp"
+#include "io/printf_string.hpp"
 
 namespace silva::io {
 
 namespace {
-
-/// Formats with printf into a std::string.
-template <typename... Args>
-std::string format(const char* fmt, Args... args) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
 
 /// One depth pixel lifted into the world.
 struct DepthPoint {
@@ -80,7 +73,7 @@ void export_colmap(const Dataset& d, const std::filesystem::path& out, const Exp
     const auto key = std::make_tuple(cam.width, cam.height, cam.fx, cam.fy, cam.cx, cam.cy);
     auto [it, added] = camera_ids.emplace(key, int(camera_ids.size()) + 1);
     if (added)
-      cameras += format("%d PINHOLE %d %d %.17g %.17g %.17g %.17g\n", it->second, cam.width, cam.height, cam.fx,
+      cameras += printf_string("%d PINHOLE %d %d %.17g %.17g %.17g %.17g\n", it->second, cam.width, cam.height, cam.fx,
                         cam.fy, cam.cx, cam.cy);
     const Mat3d r_wc = cam.camera_to_world.block<3, 3>(0, 0).transpose();
     const Vec3d t = -r_wc * cam.camera_to_world.block<3, 1>(0, 3);
@@ -88,16 +81,16 @@ void export_colmap(const Dataset& d, const std::filesystem::path& out, const Exp
     q.normalize();
     if (q.w() < 0) q.coeffs() = -q.coeffs();
     const int image_id = d.frames[i].global_index + 1;
-    images += format("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d ", image_id, q.w(), q.x(), q.y(), q.z(), t.x(),
+    images += printf_string("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %d ", image_id, q.w(), q.x(), q.y(), q.z(), t.x(),
                      t.y(), t.z(), it->second) +
               d.frames[i].stem() + ".png\n";
     std::string line2d;
     for (size_t k = 0; k < points[i].size(); ++k) {
       const DepthPoint& p = points[i][k];
       const int id = next_point++;
-      points3d += format("%d %.9g %.9g %.9g %d %d %d 0 %d %zu\n", id, p.x.x(), p.x.y(), p.x.z(), p.bgr[2], p.bgr[1],
+      points3d += printf_string("%d %.9g %.9g %.9g %d %d %d 0 %d %zu\n", id, p.x.x(), p.x.y(), p.x.z(), p.bgr[2], p.bgr[1],
                          p.bgr[0], image_id, k);
-      line2d += format(k ? " %.1f %.1f %d" : "%.1f %.1f %d", p.u, p.v, id);
+      line2d += printf_string(k ? " %.1f %.1f %d" : "%.1f %.1f %d", p.u, p.v, id);
     }
     images += line2d + "\n";
   }

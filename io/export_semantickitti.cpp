@@ -3,7 +3,7 @@
 // object's index within its sequence, the same in every scan that sees it, where the dataset's own files number
 // a scan's objects within the scan), calib.txt and poses.txt (Silva's, already in KITTI form), times.txt and image_2/ (the
 // RGB images when the dataset has them: calib's P2 is the capture camera). Sequence numbers are fixed per Silva
-// sequence: autopilot 00, random 01, custom 02. semantic-kitti.yaml is the label map the semantic-kitti-api
+// sequence: autopilot 00, random 01, custom 02, trajectory 03. semantic-kitti.yaml is the label map the semantic-kitti-api
 // reads (labels, color_map, content, learning_map, learning_map_inv, learning_ignore, split).
 #include <array>
 #include <cmath>
@@ -52,8 +52,12 @@ KittiMap kitti_map(const Dataset& d) {
 
 /// The fixed SemanticKITTI sequence number of a Silva sequence.
 int sequence_number(const std::string& sequence) {
-  static const std::map<std::string, int> numbers = {{"autopilot", 0}, {"random", 1}, {"custom", 2}};
-  return numbers.at(sequence);
+  static const std::map<std::string, int> numbers = {{"autopilot", 0}, {"random", 1}, {"custom", 2}, {"trajectory", 3}};
+  const auto it = numbers.find(sequence);
+  if (it == numbers.end())
+    throw InputError("semantickitti: sequence '" + sequence + "' has no SemanticKITTI number (autopilot, random, custom, "
+                     "trajectory)");
+  return it->second;
 }
 
 std::string two_digits(int n) {
@@ -141,7 +145,7 @@ std::string label_yaml(const KittiMap& map, const std::map<int, uint64_t>& count
   for (const auto& [id, t] : train) y += "  " + std::to_string(t) + ": " + std::to_string(id) + "\n";
   y += "learning_ignore:\n";
   for (const auto& [id, t] : train) y += "  " + std::to_string(t) + ": " + (t == 0 ? "True" : "False") + "\n";
-  y += "split: # sequence numbers: autopilot 0, random 1, custom 2\n  train:\n";
+  y += "split: # sequence numbers: autopilot 0, random 1, custom 2, trajectory 3\n  train:\n";
   for (int s : sequences) y += "    - " + std::to_string(s) + "\n";
   y += "  valid: []\n  test: []\n";
   return y;

@@ -8,6 +8,7 @@
 #include "world/chunk_regions.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/terrain.hpp"
+#include "world/trajectory.hpp"
 
 namespace silva::world {
 
@@ -207,6 +208,27 @@ std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector
   return frames;
 }
 
+std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
+  const Trajectory walk(ctx);
+  const TrajectoryConfig& tc = ctx.config.trajectory;
+  const auto n = std::max<int64_t>(1, std::llround(tc.duration_s * tc.camera_hz));
+  std::vector<PlannedFrame> frames;
+  frames.reserve(size_t(n));
+  for (int64_t i = 0; i < n; ++i) {
+    const double t = double(i) / tc.camera_hz;
+    const RigState s = walk.at(t);
+    PlannedFrame f = make_frame(ctx, "trajectory", int(i), s.position, s.yaw_deg, s.pitch_deg, s.roll_deg,
+                                ctx.config.captures.aerial);
+    f.trail_s = s.trail_s;
+    if (ctx.config.camera.motion_blur) {
+      const double shutter = ctx.config.camera.shutter_s;
+      f.exposure_motion = ExposureMotion{shutter, walk.at(t - 0.5 * shutter).pose(), walk.at(t + 0.5 * shutter).pose()};
+    }
+    frames.push_back(std::move(f));
+  }
+  return frames;
+}
+
 std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cache,
                                         const std::vector<PoseEntry>& custom_poses,
                                         const std::function<void(const std::string&)>& warn) {
@@ -225,8 +247,15 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
       frames = plan_random(ctx, cache);
     } else if (sequence == "custom") {
       frames = plan_custom(ctx, custom_poses);
+    } else if (sequence == "trajectory") {
+      if (!ctx.trail.enabled) {
+        warn("trajectory skipped: it walks along the trail and trail.enabled = false");
+        continue;
+      }
+      frames = plan_trajectory(ctx);
     } else {
-      throw InputError("captures.sequences: unknown sequence \"" + sequence + "\"; allowed: autopilot, random, custom");
+      throw InputError("captures.sequences: unknown sequence \"" + sequence +
+                       "\"; allowed: autopilot, random, custom, trajectory");
     }
     for (auto& f : frames) {
       f.global_index = int(all.size());

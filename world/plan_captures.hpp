@@ -23,13 +23,13 @@ enum class PoseFix : uint8_t {
 
 /// One planned capture.
 struct PlannedFrame {
-  std::string sequence;           ///< "autopilot", "random" or "custom".
+  std::string sequence;           ///< "autopilot", "random", "custom" or "trajectory".
   int frame = 0;                  ///< Frame number within the sequence.
   int global_index = 0;           ///< Position in the run's global frame order (sharding key).
   bool aerial = false;            ///< Aerial perspective.
   Camera camera;                  ///< Intrinsics, pose, near/far.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).
-  std::optional<double> trail_s;  ///< Arc length along the trail (autopilot only).
+  std::optional<double> trail_s;  ///< Arc length along the trail (autopilot and trajectory only).
   PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
   std::optional<ExposureMotion> exposure_motion;  ///< Camera motion while the shutter is open (motion blur), or still.
 };
@@ -76,6 +76,12 @@ std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache
 
 /// Custom: one frame per pose of the pose file, in file order (z omitted: ground height above terrain).
 std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector<PoseEntry>& poses);
+
+/// Trajectory: llround(trajectory.duration_s x camera_hz) frames (at least one) of the walk (world/trajectory.hpp)
+/// at i / camera_hz seconds, trail_s its nominal arc length, with camera.motion_blur the walk's poses when the
+/// shutter opens and closes; no clearance search (the trail is kept clear).
+/// InputError when the walk runs past the trail's end (the config's ranges keep it within 432 000 frames).
+std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx);
 
 /// Every frame of the run (autopilot settled): the sequences of captures.sequences in order, global indices assigned.
 /// Autopilot is skipped with a warning (via `warn`) when the trail is off; InputError if nothing is left.

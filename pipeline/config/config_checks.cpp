@@ -107,11 +107,12 @@ void check_config(const LoadedConfig& loaded) {
   }
   if (sequences.empty()) {
     throw InputError(where + ": captures.sequences is empty (allowed: one or more of autopilot, "
-                             "random, custom)");
+                             "random, custom, trajectory)");
   }
   const bool autopilot = contains(sequences, "autopilot") && c.trail.enabled;
-  if (!autopilot && !contains(sequences, "random") && !contains(sequences, "custom")) {
-    throw InputError(where + ": the autopilot sequence needs trail.enabled = true, and no other "
+  const bool trajectory = contains(sequences, "trajectory") && c.trail.enabled;
+  if (!autopilot && !trajectory && !contains(sequences, "random") && !contains(sequences, "custom")) {
+    throw InputError(where + ": the autopilot and trajectory sequences need trail.enabled = true, and no other "
                              "sequence is left in captures.sequences");
   }
   if (autopilot && c.captures.autopilot_yaws.empty()) {

@@ -22,7 +22,7 @@ std::vector<ConfigKey> build_schema() {
       "depth_preview", "lidar"};
   const std::vector<std::string_view> export_formats = {"coco-panoptic", "coco-instances", "cityscapes",
                                                         "colmap", "nerfstudio", "semantickitti", "rosbag2"};
-  const std::vector<std::string_view> sequences = {"autopilot", "random", "custom"};
+  const std::vector<std::string_view> sequences = {"autopilot", "random", "custom", "trajectory"};
   using T = ValueType;
   return {
       {"seed", T::Int, "world seed; drawn from the clock when absent (printed %010d)",
@@ -186,6 +186,24 @@ std::vector<ConfigKey> build_schema() {
        "grass and ferns farther from the camera are not drawn (ground shows, labels follow), in every "
        "LOD mode, metres",
        above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.render.ground_cover_distance; }},
+      {"trajectory.speed", T::Float, "walking speed of the trajectory sequence along the trail, metres per second",
+       between(0.1, 10), {}, [](Config& c) -> FieldRef { return &c.trajectory.speed; }},
+      {"trajectory.duration_s", T::Float, "length of the trajectory sequence, seconds", between(0.1, 3600), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.duration_s; }},
+      {"trajectory.start_m", T::Float, "arc length along the trail where the trajectory starts, metres",
+       between(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.trajectory.start_m; }},
+      {"trajectory.camera_hz", T::Float, "camera frames per second of the trajectory sequence", between(0.1, 120), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.camera_hz; }},
+      {"trajectory.imu_hz", T::Float, "IMU samples per second (trajectory/imu.csv)", between(1, 2000), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.imu_hz; }},
+      {"trajectory.bob_m", T::Float, "height bob of the walk, amplitude in metres", between(0, 0.5), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.bob_m; }},
+      {"trajectory.sway_deg", T::Float, "roll sway of the walk, amplitude in degrees", between(0, 20), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.sway_deg; }},
+      {"trajectory.step_hz", T::Float, "steps per second: the bob's frequency (the sway's is half)", between(0.1, 5), {},
+       [](Config& c) -> FieldRef { return &c.trajectory.step_hz; }},
+      {"trajectory.imu_noise", T::String, "IMU noise model: adis16448 (EuRoC's IMU) or none", {}, {"adis16448", "none"},
+       [](Config& c) -> FieldRef { return &c.trajectory.imu_noise; }},
       {"lidar.preset", T::String,
        "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
        "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},

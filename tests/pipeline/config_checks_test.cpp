@@ -60,13 +60,18 @@ TEST(ConfigChecks, SemanticKittiNeedsLidar) {
 
 TEST(ConfigChecks, SomeSequenceIsLeft) {
   EXPECT_EQ(check_message([](Config& c) { c.captures.sequences = {}; }),
-            "a.toml: captures.sequences is empty (allowed: one or more of autopilot, random, custom)");
+            "a.toml: captures.sequences is empty (allowed: one or more of autopilot, random, custom, trajectory)");
   EXPECT_EQ(check_message([](Config& c) {
               c.captures.sequences = {"autopilot"};
               c.trail.enabled = false;
             }),
-            "a.toml: the autopilot sequence needs trail.enabled = true, and no other sequence is "
+            "a.toml: the autopilot and trajectory sequences need trail.enabled = true, and no other sequence is "
             "left in captures.sequences");
+  EXPECT_NE(check_message([](Config& c) {
+              c.captures.sequences = {"trajectory"};
+              c.trail.enabled = false;
+            }),
+            "");
   EXPECT_EQ(check_message([](Config& c) { c.trail.enabled = false; }), "");  // random remains
 }
 

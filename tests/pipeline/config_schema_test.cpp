@@ -29,10 +29,12 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "lighting.randomize.enabled", "lighting.randomize.sun_elevation_deg", "lighting.randomize.sun_azimuth_deg",
         "lighting.randomize.cloud_cover", "lighting.randomize.fog_density_scale",
         "lighting.randomize.exposure_compensation_ev", "lighting.randomize.white_balance_k",
-        "lighting.randomize.weathers", "lighting.randomize.weather_weights"}) {
+        "lighting.randomize.weathers", "lighting.randomize.weather_weights", "trajectory.speed",
+        "trajectory.duration_s", "trajectory.start_m", "trajectory.camera_hz", "trajectory.imu_hz", "trajectory.bob_m",
+        "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 70u);
+  EXPECT_EQ(names.size(), 79u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

@@ -18,8 +18,11 @@
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_lock.hpp"
+#include "io/trajectory_files.hpp"
 #include "pipeline/schedule/world_schedule.hpp"
 #include "systems/cast_lidar.hpp"
+#include "world/imu_model.hpp"
+#include "world/trajectory.hpp"
 #include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
@@ -85,6 +88,29 @@ void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, co
     io::write_file_atomic(run_dir / name / "calib.txt",
                           io::kitti_calib(frames.begin()->second->camera, systems::lidar_to_camera(cfg.lidar)));
   }
+}
+
+/// Writes the trajectory sequence's IMU readings (imu.csv), their noise (imu.yaml) and its camera poses
+/// (groundtruth.txt, TUM) into <run_dir>/trajectory/ when the plan has that sequence.
+void write_trajectory_files(const world::WorldContext& ctx, const std::vector<world::PlannedFrame>& plan,
+                            const fs::path& run_dir) {
+  std::vector<double> times;
+  std::vector<Mat4d> poses;
+  const TrajectoryConfig& tc = ctx.config.trajectory;
+  for (const world::PlannedFrame& f : plan)
+    if (f.sequence == "trajectory") {
+      times.push_back(double(f.frame) / tc.camera_hz);
+      poses.push_back(f.camera.camera_to_world);
+    }
+  if (times.empty()) return;
+  const fs::path dir = run_dir / "trajectory";
+  fs::create_directories(dir);
+  const ImuNoise noise = world::imu_noise_model(tc.imu_noise);
+  const std::vector<ImuSample> imu =
+      world::imu_samples(world::Trajectory(ctx), tc.imu_hz, noise, uint64_t(ctx.config.seed));
+  io::write_file_atomic(dir / "imu.csv", io::euroc_imu_csv(imu));
+  io::write_file_atomic(dir / "imu.yaml", io::kalibr_imu_yaml(noise, tc.imu_hz));
+  io::write_file_atomic(dir / "groundtruth.txt", io::tum_trajectory(times, poses));
 }
 
 /// Writes the finished run's output.formats into <run_dir>/export/ (as silva export).
@@ -154,6 +180,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
     reporter.note("silva: seed " + io::seed_folder_name(cfg.seed) + (seed_from_marker ? " (from the run folder)" : ""));
   io::write_file_atomic(run_dir / "ontology.json", io::ontology_json(setup.ontology));
   if (outputs.has(io::OutputType::Lidar)) write_lidar_sequence_files(plan, run_dir, cfg);
+  write_trajectory_files(setup.world, plan, run_dir);
 
   int skipped = 0;
   const std::vector<world::PlannedFrame> frames = frames_to_capture(plan, request, outputs, run_dir, skipped);

@@ -1,0 +1,48 @@
+#include "io/trajectory_files.hpp"
+
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+
+#include "io/printf_string.hpp"
+
+namespace silva::io {
+
+std::string euroc_imu_csv(std::span<const ImuSample> samples) {
+  std::string out =
+      "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],a_RS_S_x [m s^-2],"
+      "a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]\n";
+  out.reserve(out.size() + samples.size() * 120);
+  for (const ImuSample& s : samples)
+    out += printf_string("%lld,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n", static_cast<long long>(s.t_ns), s.gyro.x(),
+                  s.gyro.y(), s.gyro.z(), s.accel.x(), s.accel.y(), s.accel.z());
+  return out;
+}
+
+std::string kalibr_imu_yaml(const ImuNoise& noise, double rate_hz) {
+  return printf_string(
+      "# IMU noise of the trajectory sequence (Kalibr imu.yaml); axes are the camera's (x right, y down, z forward)\n"
+      "rostopic: /imu0\n"
+      "update_rate: %.9g  # Hz\n"
+      "accelerometer_noise_density: %.9g  # m/s^2/sqrt(Hz)\n"
+      "accelerometer_random_walk: %.9g  # m/s^3/sqrt(Hz)\n"
+      "gyroscope_noise_density: %.9g  # rad/s/sqrt(Hz)\n"
+      "gyroscope_random_walk: %.9g  # rad/s^2/sqrt(Hz)\n",
+      rate_hz, noise.accel_noise_density, noise.accel_random_walk, noise.gyro_noise_density, noise.gyro_random_walk);
+}
+
+std::string tum_trajectory(std::span<const double> times_s, std::span<const Mat4d> camera_to_world) {
+  if (times_s.size() != camera_to_world.size()) throw std::invalid_argument("tum_trajectory: one time per pose");
+  std::string out = "# timestamp tx ty tz qx qy qz qw (camera_to_world, CONTRACT.md camera axes)\n";
+  for (size_t i = 0; i < times_s.size(); ++i) {
+    const Mat4d& m = camera_to_world[i];
+    Eigen::Quaterniond q(Mat3d(m.block<3, 3>(0, 0)));
+    q.normalize();
+    if (q.w() < 0) q.coeffs() = -q.coeffs();
+    out += printf_string("%.9f %.9f %.9f %.9f %.12f %.12f %.12f %.12f\n", times_s[i], m(0, 3), m(1, 3), m(2, 3), q.x(),
+                  q.y(), q.z(), q.w());
+  }
+  return out;
+}
+
+}  // namespace silva::io

@@ -1,0 +1,22 @@
+#pragma once
+/// @file The files of the `trajectory` sequence (CONTRACT.md "Trajectory files"): IMU readings as EuRoC's
+/// imu0/data.csv, the IMU's noise as Kalibr's imu.yaml, and the camera poses as a TUM trajectory.
+#include <span>
+#include <string>
+
+#include "core/imu_sample.hpp"
+#include "core/types.hpp"
+
+namespace silva::io {
+
+/// EuRoC's imu0/data.csv: its header line, then per reading "t_ns,wx,wy,wz,ax,ay,az" (rad/s, m/s²).
+std::string euroc_imu_csv(std::span<const ImuSample> samples);
+
+/// Kalibr's imu.yaml for an IMU of `noise` read at `rate_hz`, on ROS topic /imu0.
+std::string kalibr_imu_yaml(const ImuNoise& noise, double rate_hz);
+
+/// A TUM trajectory: a comment line, then per pose "t tx ty tz qx qy qz qw" (seconds, metres, the unit
+/// quaternion of the rotation with qw >= 0), times_s[i] with camera_to_world[i].
+std::string tum_trajectory(std::span<const double> times_s, std::span<const Mat4d> camera_to_world);
+
+}  // namespace silva::io

@@ -1,0 +1,123 @@
+#!/usr/bin/python3
+"""The `trajectory` sequence from the CLI, read back with numpy only: one frame per 1 / camera_hz along the
+trail, camera files agreeing with groundtruth.txt (TUM), imu.csv (EuRoC columns) at imu_hz whose readings,
+integrated here on their own from the first pose, follow the ground truth, imu.yaml (Kalibr keys), and the
+same bytes on one thread and on two.
+
+Usage: trajectory_test.py SILVA WORKDIR
+"""
+import filecmp
+import json
+import os
+import shutil
+import sys
+
+import numpy as np
+import yaml
+from silva_cli import runner
+
+SILVA, WORK = sys.argv[1], sys.argv[2]
+SEED = 4242
+silva = runner(SILVA)
+
+
+def generate(name, threads, noise):
+    out = os.path.join(WORK, name)
+    silva("generate", "--seed", str(SEED), "--out", out, "--quiet", "--threads", str(threads),
+          "--set", "output.resolution=64x48", "--set", 'captures.sequences=["trajectory"]',
+          "--set", "trajectory.duration_s=3", "--set", f"trajectory.imu_noise={noise}",
+          "--set", 'output.types=["rgb","semantic","depth"]')
+    return os.path.join(out, f"{SEED:010d}")
+
+
+def quaternion_matrix(x, y, z, w):
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def skew_exp(w, dt):
+    """Rotation matrix of the rotation vector w * dt (Rodrigues)."""
+    v = np.asarray(w) * dt
+    angle = np.linalg.norm(v)
+    if angle == 0:
+        return np.eye(3)
+    k = v / angle
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
+
+
+def main():
+    shutil.rmtree(WORK, ignore_errors=True)
+    one = generate("one", 1, "none")
+    two = generate("two", 2, "none")
+    seq = os.path.join(two, "trajectory")
+    manifest = json.load(open(os.path.join(two, "manifest.json")))
+    assert manifest["frames"] == {"trajectory": 30}, manifest["frames"]
+
+    # Same bytes on one and two threads (run.json holds timings).
+    for root, _, files in os.walk(one):
+        for f in files:
+            if f == "run.json":
+                continue
+            a = os.path.join(root, f)
+            b = os.path.join(two, os.path.relpath(a, one))
+            assert filecmp.cmp(a, b, shallow=False), f"{os.path.relpath(a, one)} differs between 1 and 2 threads"
+
+    # Ground truth: one TUM line per frame, equal to the camera files.
+    gt = np.loadtxt(os.path.join(seq, "groundtruth.txt"), comments="#")
+    assert gt.shape == (30, 8), gt.shape
+    assert np.allclose(gt[:, 0], np.arange(30) * 0.1, atol=1e-9)
+    for i, row in enumerate(gt):
+        cam = json.load(open(os.path.join(seq, "camera", f"{i:06d}.json")))
+        c2w = np.array(cam["camera_to_world"])
+        assert np.allclose(c2w[:3, 3], row[1:4], atol=1e-8), (i, c2w[:3, 3], row[1:4])
+        assert np.allclose(c2w[:3, :3], quaternion_matrix(*row[4:8]), atol=1e-9), i
+        assert cam["sequence"] == "trajectory" and cam["frame"] == i
+    steps = np.linalg.norm(np.diff(gt[:, 1:3], axis=0), axis=1)
+    assert abs(steps.mean() / 0.1 - 1.4) < 0.1, f"walks at {steps.mean() / 0.1} m/s, configured 1.4"
+
+    # IMU: EuRoC header and columns, 200 Hz, and readings that integrate back to the ground truth.
+    with open(os.path.join(seq, "imu.csv")) as f:
+        assert f.readline().startswith("#timestamp [ns],w_RS_S_x [rad s^-1]")
+    imu = np.loadtxt(os.path.join(seq, "imu.csv"), delimiter=",", comments="#")
+    assert imu.shape == (600, 7), imu.shape
+    assert np.array_equal(imu[:, 0], np.arange(600) * 5_000_000)
+    # Integrated from rest at the first pose, the positions differ from the truth by v0 * t (the initial
+    # velocity, which an IMU cannot know): fit it by least squares, then what is left is the readings' error.
+    dt = 0.005
+    R = quaternion_matrix(*gt[0, 4:8])
+    p, v = gt[0, 1:4].copy(), np.zeros(3)
+    g = np.array([0, 0, -9.81])
+    integrated = [p.copy()]
+    for k in range(599):
+        w0, w1 = imu[k, 1:4], imu[k + 1, 1:4]
+        a0 = R @ imu[k, 4:7] + g
+        R1 = R @ skew_exp(0.5 * (w0 + w1), dt)
+        a1 = R1 @ imu[k + 1, 4:7] + g
+        p = p + v * dt + (2 * a0 + a1) / 6 * dt * dt
+        v = v + 0.5 * (a0 + a1) * dt
+        R = R1
+        if (k + 1) % 20 == 0:
+            integrated.append(p.copy())
+    offsets = gt[:30, 1:4] - np.array(integrated)
+    times = gt[:30, 0:1]
+    v0 = np.linalg.lstsq(times, offsets, rcond=None)[0][0]
+    residual = np.linalg.norm(offsets - times * v0, axis=1)
+    assert residual.max() < 0.01, f"IMU integration strays {residual.max():.4f} m from the ground truth"
+    errors = residual
+
+    kalibr = yaml.safe_load(open(os.path.join(seq, "imu.yaml")))
+    assert kalibr["update_rate"] == 200 and kalibr["rostopic"] == "/imu0", kalibr
+    assert kalibr["gyroscope_noise_density"] == 0 and kalibr["accelerometer_random_walk"] == 0, kalibr
+
+    # The ADIS16448 model adds noise of its documented size to the same walk.
+    noisy_dir = generate("noisy", 2, "adis16448")
+    noisy = np.loadtxt(os.path.join(noisy_dir, "trajectory", "imu.csv"), delimiter=",", comments="#")
+    spread = np.std(np.diff(noisy[:, 1:4] - imu[:, 1:4], axis=0))
+    expected = np.sqrt(2 * 200) * 1.6968e-4
+    assert abs(spread / expected - 1) < 0.15, f"gyro noise spread {spread}, expected {expected}"
+    print("trajectory: 30 frames, 600 IMU readings; integration error", f"{max(errors):.4f} m")
+
+
+main()

@@ -1,0 +1,99 @@
+#include "world/trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "core/camera.hpp"
+#include "core/error.hpp"
+#include "world/terrain.hpp"
+
+namespace silva::world {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Half the chord whose direction is the walk's heading, metres: the heading looks past bends
+/// shorter than this.
+constexpr double kHeadingChord = 1.5;
+
+/// The trail's centre line at arc length s, continued straight past its ends.
+Vec3d trail_point(const NavSpline& nav, double s) {
+  const double c = std::clamp(s, 0.0, nav.length());
+  return nav.position(c) + (s - c) * nav.tangent(c);
+}
+
+/// Camera height above the ground and pitch of the walk: the aerial ones with captures.aerial.
+std::pair<double, double> height_and_pitch(const Config& c) {
+  return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
+                           : std::pair{c.camera.ground_height, 0.0};
+}
+
+/// The walk's control points every kTrajectoryKnotStep seconds: the trail point at the nominal arc
+/// length, the ground under it plus the camera height, and the heading of the trail's chord there
+/// (degrees, unwrapped). InputError when the walk runs past the trail's end.
+CubicBSpline walk_curve(const WorldContext& ctx) {
+  const Config& c = ctx.config;
+  const TrajectoryConfig& tc = c.trajectory;
+  if (!ctx.trail.enabled) throw InputError("captures.sequences: trajectory follows the trail and trail.enabled = false");
+  const double length = ctx.trail.nav.length(), end = tc.start_m + tc.speed * tc.duration_s;
+  if (end > length)
+    throw InputError("trajectory: start_m + speed x duration_s = " + std::to_string(end) +
+                     " m runs past the end of the trail (" + std::to_string(length) +
+                     " m long); lower trajectory.duration_s, speed or start_m, or lengthen the trail");
+  const double height = height_and_pitch(c).first;
+  const size_t n = size_t(std::ceil(tc.duration_s / kTrajectoryKnotStep)) + 4;
+  std::vector<Eigen::Vector4d> control;
+  control.reserve(n);
+  double previous_yaw = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double s = tc.start_m + tc.speed * (double(i) - 1.0) * kTrajectoryKnotStep;
+    const Vec3d p = trail_point(ctx.trail.nav, s);
+    const Vec3d chord = trail_point(ctx.trail.nav, s + kHeadingChord) - trail_point(ctx.trail.nav, s - kHeadingChord);
+    double yaw = std::atan2(chord.y(), chord.x()) * 180.0 / kPi;
+    if (i > 0) yaw = previous_yaw + std::remainder(yaw - previous_yaw, 360.0);
+    previous_yaw = yaw;
+    control.emplace_back(p.x(), p.y(), double(terrain_height(ctx.terrain, p.x(), p.y())) + height, yaw);
+  }
+  return {std::move(control), kTrajectoryKnotStep};
+}
+
+}  // namespace
+
+Trajectory::Trajectory(const WorldContext& ctx)
+    : duration_(ctx.config.trajectory.duration_s),
+      start_m_(ctx.config.trajectory.start_m),
+      speed_(ctx.config.trajectory.speed),
+      pitch_deg_(height_and_pitch(ctx.config).second),
+      bob_m_(ctx.config.trajectory.bob_m),
+      sway_deg_(ctx.config.trajectory.sway_deg),
+      step_hz_(ctx.config.trajectory.step_hz),
+      curve_(walk_curve(ctx)) {}
+
+RigState Trajectory::at(double t) const {
+  const CubicBSpline::Sample c = curve_.at(t);
+  const double w = 2.0 * kPi * step_hz_;  // the bob's angular frequency; the sway's is half
+  RigState s;
+  s.t = t;
+  s.position = Vec3d(c.value[0], c.value[1], c.value[2] + bob_m_ * std::sin(w * t));
+  s.velocity = Vec3d(c.rate[0], c.rate[1], c.rate[2] + bob_m_ * w * std::cos(w * t));
+  s.acceleration = Vec3d(c.acceleration[0], c.acceleration[1], c.acceleration[2] - bob_m_ * w * w * std::sin(w * t));
+  s.yaw_deg = c.value[3];
+  s.pitch_deg = pitch_deg_;
+  s.roll_deg = sway_deg_ * std::sin(0.5 * w * t);
+  const double yaw_rate = c.rate[3], roll_rate = sway_deg_ * 0.5 * w * std::cos(0.5 * w * t);  // degrees per second
+  s.rotation = rotation_from_angles(s.yaw_deg, s.pitch_deg, s.roll_deg);
+  // R = Rz(yaw) Ry(-pitch) Rx(roll) B turns at yaw' about the world's Z and at roll' about the axis Rz Ry X.
+  const double to_rad = kPi / 180.0;
+  const Mat3d yaw_pitch = (Eigen::AngleAxisd(s.yaw_deg * to_rad, Vec3d::UnitZ()) *
+                           Eigen::AngleAxisd(-s.pitch_deg * to_rad, Vec3d::UnitY())).toRotationMatrix();
+  const Vec3d omega_world = to_rad * (yaw_rate * Vec3d::UnitZ() + roll_rate * (yaw_pitch * Vec3d::UnitX()));
+  s.angular_velocity = s.rotation.transpose() * omega_world;
+  s.trail_s = start_m_ + speed_ * t;
+  return s;
+}
+
+}  // namespace silva::world
