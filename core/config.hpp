@@ -134,6 +134,7 @@ struct TrajectoryConfig {
   double sway_deg = 1.0;            ///< trajectory.sway_deg (roll sway of the walk, amplitude, degrees)
   double step_hz = 1.8;             ///< trajectory.step_hz (steps per second: the bob's frequency; sway at half)
   std::string imu_noise = "adis16448";  ///< trajectory.imu_noise: "adis16448" (EuRoC's IMU) or "none"
+  bool flow = false;                ///< trajectory.flow: optical flow between consecutive frames
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

@@ -1,6 +1,7 @@
 #include "io/dataset_reader.hpp"
 
 #include <array>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -151,6 +152,17 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
                            std::to_string(row[x]) + ", which ontology.json does not define");
     }
   }
+  return m;
+}
+
+cv::Mat Dataset::depth_metres(const DatasetFrame& f) const {
+  cv::Mat m;
+  if (has("depth_exr")) {
+    m = read_depth_exr(file(f, "depth_exr", "exr"), cv::Mat(height, width, CV_8UC1));
+  } else {
+    image(f, "depth", CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
+  }
+  m.setTo(std::numeric_limits<float>::infinity(), m == 0.0f);
   return m;
 }
 

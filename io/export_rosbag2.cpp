@@ -108,19 +108,6 @@ std::span<const uint8_t> pixels(const cv::Mat& m) {
   return {m.data, m.total() * m.elemSize()};
 }
 
-/// Depth in metres (float32) for frame `f`: depth_exr when the dataset has it, else the depth PNG / 1000; no hit
-/// (0 in both) becomes +inf (REP 118: nothing within range).
-cv::Mat depth_metres(const Dataset& d, const DatasetFrame& f) {
-  cv::Mat m;
-  if (d.has("depth_exr")) {
-    m = read_depth_exr(d.file(f, "depth_exr", "exr"));
-  } else {
-    d.image(f, "depth", CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
-  }
-  m.setTo(std::numeric_limits<float>::infinity(), m == 0.0f);
-  return m;
-}
-
 /// rosbag2's metadata.yaml for one MCAP file.
 std::string metadata_yaml(const std::string& file, const std::vector<Topic>& topics,
                           const std::map<uint16_t, uint64_t>& counts, uint64_t start_ns, uint64_t end_ns) {
@@ -200,7 +187,7 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
       put("/camera/image_raw", t, encode_image(at_camera, w, h, "rgb8", 3 * w, pixels(image)));
     }
     if (depth) {
-      const cv::Mat m = depth_metres(d, f);
+      const cv::Mat m = d.depth_metres(f);
       if (m.cols != int(w) || m.rows != int(h))
         throw InputError(d.file(f, d.has("depth_exr") ? "depth_exr" : "depth", d.has("depth_exr") ? "exr" : "png").string() +
                          ": not the size its camera file gives");

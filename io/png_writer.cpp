@@ -134,6 +134,18 @@ void check_size(size_t got, int width, int height, size_t per_pixel, const char*
                                 " values does not match " + std::to_string(width) + "x" + std::to_string(height));
 }
 
+/// Encodes 16-bit samples (host order, `channels` per pixel) written big-endian, as colour type `color_type`.
+std::vector<uint8_t> encode16(std::span<const uint16_t> samples, int width, int height, size_t channels,
+                              uint8_t color_type, PngOptions options) {
+  thread_local std::vector<uint8_t> big_endian_scratch;
+  uint8_t* big_endian = scratch(big_endian_scratch, samples.size() * 2);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    big_endian[2 * i] = uint8_t(samples[i] >> 8);
+    big_endian[2 * i + 1] = uint8_t(samples[i]);
+  }
+  return encode(big_endian, width, height, 2 * channels, 16, color_type, options);
+}
+
 }  // namespace
 
 std::vector<uint8_t> encode_png_grey8(std::span<const uint8_t> pixels, int width, int height, PngOptions options) {
@@ -149,13 +161,12 @@ std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb, int width, in
 std::vector<uint8_t> encode_png_grey16(std::span<const uint16_t> pixels, int width, int height,
                                        PngOptions options) {
   check_size(pixels.size(), width, height, 1, "encode_png_grey16");
-  thread_local std::vector<uint8_t> big_endian_scratch;
-  uint8_t* big_endian = scratch(big_endian_scratch, pixels.size() * 2);
-  for (size_t i = 0; i < pixels.size(); ++i) {
-    big_endian[2 * i] = uint8_t(pixels[i] >> 8);
-    big_endian[2 * i + 1] = uint8_t(pixels[i]);
-  }
-  return encode(big_endian, width, height, 2, 16, 0, options);
+  return encode16(pixels, width, height, 1, 0, options);
+}
+
+std::vector<uint8_t> encode_png_rgb16(std::span<const uint16_t> rgb, int width, int height, PngOptions options) {
+  check_size(rgb.size(), width, height, 3, "encode_png_rgb16");
+  return encode16(rgb, width, height, 3, 2, options);
 }
 
 }  // namespace silva::io

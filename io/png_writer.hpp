@@ -1,6 +1,6 @@
 #pragma once
 /// @file A small byte-deterministic PNG encoder around libdeflate (8-bit grey, 8-bit RGB,
-/// 16-bit grey). One row filter for every row and one zlib stream; the defaults were chosen
+/// 16-bit grey, 16-bit RGB). One row filter for every row and one zlib stream; the defaults were chosen
 /// by bench/encode_bench.cpp (see bench/README.md "Encoders").
 #include <cstdint>
 #include <span>
@@ -28,5 +28,8 @@ std::vector<uint8_t> encode_png_rgb8(std::span<const uint8_t> rgb, int width, in
 /// Encodes width x height 16-bit grey values (host order; written big-endian) as a PNG.
 std::vector<uint8_t> encode_png_grey16(std::span<const uint16_t> pixels, int width, int height,
                                        PngOptions options = {});
+
+/// Encodes width x height interleaved 16-bit R, G, B values (host order; written big-endian) as a PNG.
+std::vector<uint8_t> encode_png_rgb16(std::span<const uint16_t> rgb, int width, int height, PngOptions options = {});
 
 }  // namespace silva::io

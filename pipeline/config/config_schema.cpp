@@ -204,6 +204,9 @@ std::vector<ConfigKey> build_schema() {
        [](Config& c) -> FieldRef { return &c.trajectory.step_hz; }},
       {"trajectory.imu_noise", T::String, "IMU noise model: adis16448 (EuRoC's IMU) or none", {}, {"adis16448", "none"},
        [](Config& c) -> FieldRef { return &c.trajectory.imu_noise; }},
+      {"trajectory.flow", T::Bool,
+       "write the exact optical flow between consecutive trajectory frames (needs output type depth or depth_exr)", {},
+       {}, [](Config& c) -> FieldRef { return &c.trajectory.flow; }},
       {"lidar.preset", T::String,
        "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
        "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},

@@ -31,10 +31,10 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "lighting.randomize.exposure_compensation_ev", "lighting.randomize.white_balance_k",
         "lighting.randomize.weathers", "lighting.randomize.weather_weights", "trajectory.speed",
         "trajectory.duration_s", "trajectory.start_m", "trajectory.camera_hz", "trajectory.imu_hz", "trajectory.bob_m",
-        "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise"}) {
+        "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise", "trajectory.flow"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 79u);
+  EXPECT_EQ(names.size(), 80u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

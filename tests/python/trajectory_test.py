@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""The `trajectory` sequence from the CLI, read back with numpy only: one frame per 1 / camera_hz along the
+"""The `trajectory` sequence from the CLI, read back with numpy and OpenCV: one frame per 1 / camera_hz along the
 trail, camera files agreeing with groundtruth.txt (TUM), imu.csv (EuRoC columns) at imu_hz whose readings,
-integrated here on their own from the first pose, follow the ground truth, imu.yaml (Kalibr keys), and the
-same bytes on one thread and on two.
+integrated here on their own from the first pose, follow the ground truth, imu.yaml (Kalibr keys), optical flow
+(KITTI PNG, Middlebury .flo, masks) that carries each frame's labels onto the next, and the same bytes on one
+thread and on two.
 
 Usage: trajectory_test.py SILVA WORKDIR
 """
@@ -12,6 +13,7 @@ import os
 import shutil
 import sys
 
+import cv2
 import numpy as np
 import yaml
 from silva_cli import runner
@@ -24,8 +26,8 @@ silva = runner(SILVA)
 def generate(name, threads, noise):
     out = os.path.join(WORK, name)
     silva("generate", "--seed", str(SEED), "--out", out, "--quiet", "--threads", str(threads),
-          "--set", "output.resolution=64x48", "--set", 'captures.sequences=["trajectory"]',
-          "--set", "trajectory.duration_s=3", "--set", f"trajectory.imu_noise={noise}",
+          "--set", "output.resolution=320x240", "--set", 'captures.sequences=["trajectory"]',
+          "--set", "trajectory.duration_s=2", "--set", f"trajectory.imu_noise={noise}", "--set", "trajectory.flow=true",
           "--set", 'output.types=["rgb","semantic","depth"]')
     return os.path.join(out, f"{SEED:010d}")
 
@@ -53,7 +55,7 @@ def main():
     two = generate("two", 2, "none")
     seq = os.path.join(two, "trajectory")
     manifest = json.load(open(os.path.join(two, "manifest.json")))
-    assert manifest["frames"] == {"trajectory": 30}, manifest["frames"]
+    assert manifest["frames"] == {"trajectory": 20}, manifest["frames"]
 
     # Same bytes on one and two threads (run.json holds timings).
     for root, _, files in os.walk(one):
@@ -66,8 +68,8 @@ def main():
 
     # Ground truth: one TUM line per frame, equal to the camera files.
     gt = np.loadtxt(os.path.join(seq, "groundtruth.txt"), comments="#")
-    assert gt.shape == (30, 8), gt.shape
-    assert np.allclose(gt[:, 0], np.arange(30) * 0.1, atol=1e-9)
+    assert gt.shape == (20, 8), gt.shape
+    assert np.allclose(gt[:, 0], np.arange(20) * 0.1, atol=1e-9)
     for i, row in enumerate(gt):
         cam = json.load(open(os.path.join(seq, "camera", f"{i:06d}.json")))
         c2w = np.array(cam["camera_to_world"])
@@ -81,8 +83,8 @@ def main():
     with open(os.path.join(seq, "imu.csv")) as f:
         assert f.readline().startswith("#timestamp [ns],w_RS_S_x [rad s^-1]")
     imu = np.loadtxt(os.path.join(seq, "imu.csv"), delimiter=",", comments="#")
-    assert imu.shape == (600, 7), imu.shape
-    assert np.array_equal(imu[:, 0], np.arange(600) * 5_000_000)
+    assert imu.shape == (400, 7), imu.shape
+    assert np.array_equal(imu[:, 0], np.arange(400) * 5_000_000)
     # Integrated from rest at the first pose, the positions differ from the truth by v0 * t (the initial
     # velocity, which an IMU cannot know): fit it by least squares, then what is left is the readings' error.
     dt = 0.005
@@ -90,7 +92,7 @@ def main():
     p, v = gt[0, 1:4].copy(), np.zeros(3)
     g = np.array([0, 0, -9.81])
     integrated = [p.copy()]
-    for k in range(599):
+    for k in range(399):
         w0, w1 = imu[k, 1:4], imu[k + 1, 1:4]
         a0 = R @ imu[k, 4:7] + g
         R1 = R @ skew_exp(0.5 * (w0 + w1), dt)
@@ -100,8 +102,8 @@ def main():
         R = R1
         if (k + 1) % 20 == 0:
             integrated.append(p.copy())
-    offsets = gt[:30, 1:4] - np.array(integrated)
-    times = gt[:30, 0:1]
+    offsets = gt[:20, 1:4] - np.array(integrated)
+    times = gt[:20, 0:1]
     v0 = np.linalg.lstsq(times, offsets, rcond=None)[0][0]
     residual = np.linalg.norm(offsets - times * v0, axis=1)
     assert residual.max() < 0.01, f"IMU integration strays {residual.max():.4f} m from the ground truth"
@@ -111,13 +113,40 @@ def main():
     assert kalibr["update_rate"] == 200 and kalibr["rostopic"] == "/imu0", kalibr
     assert kalibr["gyroscope_noise_density"] == 0 and kalibr["accelerometer_random_walk"] == 0, kalibr
 
+    # Optical flow: KITTI's valid bit is the mask's 0, and following the .flo vectors from a valid pixel lands on a
+    # pixel of the other frame with the same semantic label (>= 99 %: the rest are label edges between pixel centres).
+    for direction, step, frames in (("forward", 1, range(19)), ("backward", -1, range(1, 20))):
+        agree = total = 0
+        for t in frames:
+            kitti = cv2.imread(os.path.join(seq, f"flow_{direction}", f"{t:06d}.png"), cv2.IMREAD_UNCHANGED)
+            mask = cv2.imread(os.path.join(seq, f"flow_{direction}_mask", f"{t:06d}.png"), cv2.IMREAD_UNCHANGED)
+            raw = open(os.path.join(seq, f"flow_{direction}_flo", f"{t:06d}.flo"), "rb").read()
+            assert raw[:4] == b"PIEH" and tuple(np.frombuffer(raw[4:12], np.int32)) == (320, 240)
+            flo = np.frombuffer(raw[12:], np.float32).reshape(240, 320, 2)
+            valid = mask == 0
+            assert np.array_equal(kitti[:, :, 0] == 1, valid), f"{direction} {t}: KITTI valid bit differs from the mask"
+            u = (kitti[:, :, 2].astype(np.float64) - 32768) / 64
+            assert np.all(np.abs(u[valid] - flo[:, :, 0][valid]) <= 1 / 128 + 1e-6), f"{direction} {t}: KITTI u"
+            here = cv2.imread(os.path.join(seq, "semantic", f"{t:06d}.png"), cv2.IMREAD_UNCHANGED)
+            there = cv2.imread(os.path.join(seq, "semantic", f"{t + step:06d}.png"), cv2.IMREAD_UNCHANGED)
+            ys, xs = np.nonzero(valid)
+            x1 = np.floor(xs + 0.5 + flo[ys, xs, 0]).astype(int)
+            y1 = np.floor(ys + 0.5 + flo[ys, xs, 1]).astype(int)
+            agree += int(np.sum(here[ys, xs] == there[y1, x1]))
+            total += len(ys)
+        assert total > 0.4 * 19 * 320 * 240, f"{direction}: only {total} valid flow pixels"
+        assert agree / total >= 0.99, f"{direction} flow carries {agree / total:.4f} of the labels, needs 0.99"
+        print(f"{direction} flow carries {agree / total:.4f} of the labels of {total} valid pixels")
+    assert not os.path.exists(os.path.join(seq, "flow_forward", "000019.png"))
+    assert not os.path.exists(os.path.join(seq, "flow_backward", "000000.png"))
+
     # The ADIS16448 model adds noise of its documented size to the same walk.
     noisy_dir = generate("noisy", 2, "adis16448")
     noisy = np.loadtxt(os.path.join(noisy_dir, "trajectory", "imu.csv"), delimiter=",", comments="#")
     spread = np.std(np.diff(noisy[:, 1:4] - imu[:, 1:4], axis=0))
     expected = np.sqrt(2 * 200) * 1.6968e-4
     assert abs(spread / expected - 1) < 0.15, f"gyro noise spread {spread}, expected {expected}"
-    print("trajectory: 30 frames, 600 IMU readings; integration error", f"{max(errors):.4f} m")
+    print("trajectory: 20 frames, 400 IMU readings; integration error", f"{max(errors):.4f} m")
 
 
 main()

@@ -18,6 +18,7 @@
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_lock.hpp"
+#include "io/sequence_flow.hpp"
 #include "io/trajectory_files.hpp"
 #include "pipeline/schedule/world_schedule.hpp"
 #include "systems/cast_lidar.hpp"
@@ -212,6 +213,8 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
   } else {
     io::write_file_atomic(run_dir / "run.json", record.dump(2) + "\n");
     io::write_file_atomic(run_dir / "manifest.json", manifest.dump(2) + "\n");
+    if (const int files = io::write_trajectory_flow(run_dir))
+      reporter.note("silva: wrote " + std::to_string(files) + " optical flow files into " + (run_dir / "trajectory").string());
     export_run_formats(cfg, run_dir, reporter);
     const Stopwatch card_clock;
     write_card(run_dir, {&stats.card, &schedule, &setup});

@@ -13,6 +13,7 @@
 #include "io/output_types.hpp"
 #include "io/run_folder.hpp"
 #include "io/run_lock.hpp"
+#include "io/sequence_flow.hpp"
 
 namespace silva::app {
 
@@ -75,6 +76,8 @@ int merge_shards(const MergeRequest& request, const Reporter& reporter) {
   run["slowest_shard_wall_s"] = wall;
   io::write_file_atomic(dir / "run.json", run.dump(2) + "\n");
   io::write_file_atomic(dir / "manifest.json", manifest.dump(2) + "\n");
+  if (const int files = io::write_trajectory_flow(dir))
+    reporter.note("silva: wrote " + std::to_string(files) + " optical flow files into " + (dir / "trajectory").string());
   write_card(dir);
   reporter.result({{"ok", true}, {"run_dir", dir.string()}, {"shards", count}, {"frames", frames}},
                   "merged " + std::to_string(count) + " shards, " + std::to_string(frames) + " frames, into " +
