@@ -1,7 +1,6 @@
 #include "io/sequence_flow.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <vector>
 
@@ -19,14 +18,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Writes the flow of frame `from` into frame `to` into `folders` of its sequence.
-void write_flow(const Dataset& d, const DatasetFrame& from, const DatasetFrame& to, const FlowFolders& folders) {
-  const FlowField flow = optical_flow(read_camera_json(d.file(from, "camera", "json")).camera, d.depth_metres(from),
-                                      read_camera_json(d.file(to, "camera", "json")).camera, d.depth_metres(to));
+/// Writes `flow` of frame `from` into `folders` of its sequence.
+void write_flow(const Dataset& d, const DatasetFrame& from, const FlowField& flow, const FlowFolders& folders) {
   const fs::path seq = d.dir / from.sequence;
   write_file_atomic(seq / frame_file(folders.kitti, from.frame, "png"), encode_kitti_flow_png(flow));
   write_file_atomic(seq / frame_file(folders.flo, from.frame, "flo"), encode_middlebury_flo(flow));
   write_file_atomic(seq / frame_file(folders.mask, from.frame, "png"), encode_flow_mask_png(flow));
+}
+
+/// Writes the forward flow of frame `a` and the backward flow of the next frame `b`: one pair of depth reads.
+void write_pair(const Dataset& d, const DatasetFrame& a, const DatasetFrame& b) {
+  const Camera camera_a = read_camera_json(d.file(a, "camera", "json")).camera;
+  const Camera camera_b = read_camera_json(d.file(b, "camera", "json")).camera;
+  const cv::Mat depth_a = d.depth_metres(a), depth_b = d.depth_metres(b);
+  write_flow(d, a, optical_flow(camera_a, depth_a, camera_b, depth_b), kForwardFlow);
+  write_flow(d, b, optical_flow(camera_b, depth_b, camera_a, depth_a), kBackwardFlow);
 }
 
 }  // namespace
@@ -44,18 +50,9 @@ int write_sequence_flow(const Dataset& d, const std::string& sequence) {
       fs::create_directories(d.dir / sequence / folder, ec);
       if (ec) throw IoError("cannot create folder " + (d.dir / sequence / folder).string() + ": " + ec.message());
     }
-  std::atomic<int> written{0};
-  tbb::parallel_for(size_t(0), frames.size(), [&](size_t i) {
-    if (i + 1 < frames.size()) {
-      write_flow(d, frames[i], frames[i + 1], kForwardFlow);
-      written += 3;
-    }
-    if (i > 0) {
-      write_flow(d, frames[i], frames[i - 1], kBackwardFlow);
-      written += 3;
-    }
-  });
-  return written;
+  if (frames.size() < 2) return 0;
+  tbb::parallel_for(size_t(0), frames.size() - 1, [&](size_t i) { write_pair(d, frames[i], frames[i + 1]); });
+  return int(6 * (frames.size() - 1));
 }
 
 int write_trajectory_flow(const fs::path& run_dir) {
