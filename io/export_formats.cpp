@@ -11,7 +11,7 @@ namespace silva::io {
 
 const std::vector<std::string>& export_format_names() {
   static const std::vector<std::string> names = {"coco-panoptic", "coco-instances", "cityscapes", "colmap",
-                                                 "nerfstudio", "semantickitti", "rosbag2"};
+                                                 "nerfstudio", "semantickitti", "rosbag2", "euroc"};
   return names;
 }
 
@@ -63,6 +63,7 @@ void export_dataset(const Dataset& dataset, ExportFormat format, const std::file
     case ExportFormat::Nerfstudio: return export_nerfstudio(dataset, out, options);
     case ExportFormat::SemanticKitti: return export_semantickitti(dataset, out, options);
     case ExportFormat::Rosbag2: return export_rosbag2(dataset, out, options);
+    case ExportFormat::Euroc: return export_euroc(dataset, out, options);
   }
 }
 

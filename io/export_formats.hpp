@@ -15,10 +15,10 @@
 namespace silva::io {
 
 /// An export format.
-enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti, Rosbag2 };
+enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti, Rosbag2, Euroc };
 
 /// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio,
-/// semantickitti, rosbag2.
+/// semantickitti, rosbag2, euroc.
 const std::vector<std::string>& export_format_names();
 
 /// The name of `format`.
@@ -76,6 +76,8 @@ void export_cityscapes(const Dataset& dataset, const std::filesystem::path& out,
 void export_colmap(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// nerfstudio / instant-ngp / 3DGS: transforms.json (OpenGL camera axes), images/, depth/, masks/.
 void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
+/// EuRoC / ASL (visual-inertial odometry): the trajectory sequence as mav0/{cam0,imu0,state_groundtruth_estimate0}/.
+void export_euroc(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// SemanticKITTI (LiDAR): sequences/NN/{velodyne,labels,image_2}/, calib.txt, poses.txt, times.txt and
 /// semantic-kitti.yaml, the label map.
 void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);

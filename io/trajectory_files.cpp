@@ -19,6 +19,23 @@ std::string euroc_imu_csv(std::span<const ImuSample> samples) {
   return out;
 }
 
+std::string euroc_state_csv(std::span<const ImuState> states) {
+  std::string out =
+      "#timestamp, p_RS_R_x [m], p_RS_R_y [m], p_RS_R_z [m], q_RS_w [], q_RS_x [], q_RS_y [], q_RS_z [], "
+      "v_RS_R_x [m s^-1], v_RS_R_y [m s^-1], v_RS_R_z [m s^-1], b_w_RS_S_x [rad s^-1], b_w_RS_S_y [rad s^-1], "
+      "b_w_RS_S_z [rad s^-1], b_a_RS_S_x [m s^-2], b_a_RS_S_y [m s^-2], b_a_RS_S_z [m s^-2]\n";
+  for (const ImuState& s : states) {
+    Eigen::Quaterniond q(s.rotation);
+    q.normalize();
+    if (q.w() < 0) q.coeffs() = -q.coeffs();
+    out += printf_string("%lld,%.9f,%.9f,%.9f,%.12f,%.12f,%.12f,%.12f,%.9f,%.9f,%.9f,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g\n",
+                         static_cast<long long>(s.t_ns), s.position.x(), s.position.y(), s.position.z(), q.w(), q.x(),
+                         q.y(), q.z(), s.velocity.x(), s.velocity.y(), s.velocity.z(), s.gyro_bias.x(),
+                         s.gyro_bias.y(), s.gyro_bias.z(), s.accel_bias.x(), s.accel_bias.y(), s.accel_bias.z());
+  }
+  return out;
+}
+
 std::string kalibr_imu_yaml(const ImuNoise& noise, double rate_hz) {
   return printf_string(
       "# IMU noise of the trajectory sequence (Kalibr imu.yaml); axes are the camera's (x right, y down, z forward)\n"

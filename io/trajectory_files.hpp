@@ -12,6 +12,10 @@ namespace silva::io {
 /// EuRoC's imu0/data.csv: its header line, then per reading "t_ns,wx,wy,wz,ax,ay,az" (rad/s, m/s²).
 std::string euroc_imu_csv(std::span<const ImuSample> samples);
 
+/// EuRoC's state_groundtruth_estimate0/data.csv: its header line, then per state "t_ns, p (m), q (w x y z, the IMU's
+/// rotation to the world, w >= 0), v (m/s), gyro bias (rad/s), accelerometer bias (m/s²)".
+std::string euroc_state_csv(std::span<const ImuState> states);
+
 /// Kalibr's imu.yaml for an IMU of `noise` read at `rate_hz`, on ROS topic /imu0.
 std::string kalibr_imu_yaml(const ImuNoise& noise, double rate_hz);
 

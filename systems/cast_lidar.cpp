@@ -109,8 +109,8 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         pose.seed = uint64_t(config.seed);
         pose.key = render::noise_key(work.frame.sequence, uint64_t(work.frame.frame));
         if (config.lidar.motion_distortion && work.frame.trail_s) {
-          const double distance = config.camera.autopilot_speed / settings.lidar.rotation_hz;
-          const Mat4d end = world::autopilot_pose_along(ctx, work.frame, distance) * lidar_to_camera(config.lidar);
+          const Mat4d end =
+              world::sweep_end_pose(ctx, work.frame, settings.lidar.rotation_hz) * lidar_to_camera(config.lidar);
           pose.end = raycast::SweepEnd{end.block<3, 3>(0, 0), end.block<3, 1>(0, 3)};
         }
         raycast::CastOptions options;

@@ -33,11 +33,23 @@ std::vector<ImuSample> imu_samples(const Trajectory& walk, double rate_hz, const
   for (size_t k = 0; k < count; ++k) {
     ImuSample r = ideal_imu(walk.at(double(k) / rate_hz));
     r.t_ns = std::llround(double(k) * 1e9 / rate_hz);
+    r.gyro_bias = gyro_bias;
+    r.accel_bias = accel_bias;
     r.gyro += gyro_bias + noise.gyro_noise_density * root_rate * normal3();
     r.accel += accel_bias + noise.accel_noise_density * root_rate * normal3();
     gyro_bias += noise.gyro_random_walk / root_rate * normal3();
     accel_bias += noise.accel_random_walk / root_rate * normal3();
     out.push_back(r);
+  }
+  return out;
+}
+
+std::vector<ImuState> imu_states(const Trajectory& walk, double rate_hz, std::span<const ImuSample> readings) {
+  std::vector<ImuState> out;
+  out.reserve(readings.size());
+  for (size_t k = 0; k < readings.size(); ++k) {
+    const RigState s = walk.at(double(k) / rate_hz);
+    out.push_back({readings[k].t_ns, s.position, s.rotation, s.velocity, readings[k].gyro_bias, readings[k].accel_bias});
   }
   return out;
 }

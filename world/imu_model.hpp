@@ -2,6 +2,7 @@
 /// @file The IMU of the `trajectory` sequence: gyroscope and accelerometer readings from the walk's exact
 /// angular velocity and acceleration, with the white noise and bias random walks VIO calibrations use.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,8 @@ ImuSample ideal_imu(const RigState& s);
 /// white noise of standard deviation density x √rate and a bias starting at 0 that walks by
 /// random_walk / √rate per sample; drawn from `seed` (the same seed gives the same readings).
 std::vector<ImuSample> imu_samples(const Trajectory& walk, double rate_hz, const ImuNoise& noise, uint64_t seed);
+
+/// The walk's true state at each of `readings` (made by imu_samples with the same rate), with their biases.
+std::vector<ImuState> imu_states(const Trajectory& walk, double rate_hz, std::span<const ImuSample> readings);
 
 }  // namespace silva::world

@@ -229,6 +229,12 @@ std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
   return frames;
 }
 
+Mat4d sweep_end_pose(const WorldContext& ctx, const PlannedFrame& f, double rotation_hz) {
+  if (f.sequence == "trajectory")
+    return Trajectory(ctx).at(double(f.frame) / ctx.config.trajectory.camera_hz + 1.0 / rotation_hz).pose();
+  return autopilot_pose_along(ctx, f, ctx.config.camera.autopilot_speed / rotation_hz);
+}
+
 std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cache,
                                         const std::vector<PoseEntry>& custom_poses,
                                         const std::function<void(const std::string&)>& warn) {

@@ -62,6 +62,11 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
 /// distance / camera.autopilot_speed seconds after (or before) the frame.
 Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance);
 
+/// The camera-to-world pose of autopilot or trajectory frame `f` (it has trail_s) one LiDAR revolution
+/// (1 / rotation_hz seconds) after the frame: along the walk for trajectory frames, else autopilot_pose_along
+/// by camera.autopilot_speed / rotation_hz metres.
+Mat4d sweep_end_pose(const WorldContext& ctx, const PlannedFrame& f, double rotation_hz);
+
 /// Gives each autopilot frame its motion while the shutter is open: the poses along the trail at
 /// trail_s -/+ camera.autopilot_speed * camera.shutter_s / 2 (kept within the trail), yaws relative to it.
 void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames);

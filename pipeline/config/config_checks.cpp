@@ -101,6 +101,8 @@ void check_config(const LoadedConfig& loaded) {
     throw InputError(where + ": output.formats has \"semantickitti\", which needs \"lidar\" in output.types");
   check_multiple(where, c.terrain.chunk_size, "terrain.vertex_spacing", c.terrain.vertex_spacing);
   check_multiple(where, c.terrain.chunk_size, "vegetation.grid_spacing", c.vegetation.grid_spacing);
+  if (contains(c.output.formats, "euroc") && !contains(c.captures.sequences, "trajectory"))
+    throw InputError(where + ": output.formats has \"euroc\", which needs \"trajectory\" in captures.sequences");
   if (c.trajectory.flow && !contains(c.output.types, "depth") && !contains(c.output.types, "depth_exr"))
     throw InputError(where + ": trajectory.flow = true needs \"depth\" or \"depth_exr\" in output.types");
   const auto& sequences = c.captures.sequences;

@@ -20,6 +20,25 @@ TEST(TrajectoryFiles, EurocImuCsvHasItsHeaderAndOneLinePerReading) {
             "5000000,0,0,0,1.5,2,-3\n");
 }
 
+TEST(TrajectoryFiles, EurocStateCsvPutsTheQuaternionsWFirst) {
+  ImuState s;
+  s.t_ns = 5000000;
+  s.position = Vec3d(1, 2, 3);
+  s.rotation << 0, -1, 0, 1, 0, 0, 0, 0, 1;  // 90 degrees about z
+  s.velocity = Vec3d(0.5, 0, -0.25);
+  s.gyro_bias = Vec3d(1e-5, 0, 0);
+  s.accel_bias = Vec3d(0, 0, 0.002);
+  const std::vector<ImuState> states = {s};
+  const std::string csv = euroc_state_csv(states);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "#timestamp, p_RS_R_x [m], p_RS_R_y [m], p_RS_R_z [m], q_RS_w [], q_RS_x [], q_RS_y [], q_RS_z [], "
+            "v_RS_R_x [m s^-1], v_RS_R_y [m s^-1], v_RS_R_z [m s^-1], b_w_RS_S_x [rad s^-1], b_w_RS_S_y [rad s^-1], "
+            "b_w_RS_S_z [rad s^-1], b_a_RS_S_x [m s^-2], b_a_RS_S_y [m s^-2], b_a_RS_S_z [m s^-2]");
+  EXPECT_EQ(csv.substr(csv.find('\n') + 1),
+            "5000000,1.000000000,2.000000000,3.000000000,0.707106781187,0.000000000000,0.000000000000,0.707106781187,"
+            "0.500000000,0.000000000,-0.250000000,1e-05,0,0,0,0,0.002\n");
+}
+
 TEST(TrajectoryFiles, KalibrYamlNamesEveryNoiseParameter) {
   const std::string yaml = kalibr_imu_yaml({1.6968e-04, 1.9393e-05, 2.0e-3, 3.0e-3}, 200);
   for (const char* line : {"update_rate: 200 ", "accelerometer_noise_density: 0.002 ", "accelerometer_random_walk: 0.003 ",

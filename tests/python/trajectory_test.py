@@ -140,12 +140,50 @@ def main():
     assert not os.path.exists(os.path.join(seq, "flow_forward", "000019.png"))
     assert not os.path.exists(os.path.join(seq, "flow_backward", "000000.png"))
 
+    # EuRoC export: what a VIO system reads, consistent with the dataset's own files.
+    silva("export", two, "--format", "euroc", "--out", os.path.join(WORK, "export"), "--quiet")
+    mav = os.path.join(WORK, "export", "euroc", "mav0")
+    listed = np.loadtxt(os.path.join(mav, "cam0", "data.csv"), delimiter=",", comments="#", dtype=str)
+    assert len(listed) == 20 and all(f"{int(t)}.png" == name for t, name in listed), listed[:3]
+    assert np.array_equal(listed[:, 0].astype(np.int64), np.arange(20) * 100_000_000)
+    for i, (t, name) in enumerate(listed):
+        assert filecmp.cmp(os.path.join(mav, "cam0", "data", name), os.path.join(seq, "rgb", f"{i:06d}.png"),
+                           shallow=False), name
+    cam0 = yaml.safe_load(open(os.path.join(mav, "cam0", "sensor.yaml")))
+    K = np.array(json.load(open(os.path.join(seq, "camera", "000000.json")))["K"])
+    assert cam0["resolution"] == [320, 240] and cam0["rate_hz"] == 10, cam0
+    assert np.allclose(cam0["intrinsics"], [K[0][0], K[1][1], K[0][2] - 0.5, K[1][2] - 0.5]), cam0["intrinsics"]
+    assert np.array_equal(np.array(cam0["T_BS"]["data"]).reshape(4, 4), np.eye(4))
+    assert filecmp.cmp(os.path.join(mav, "imu0", "data.csv"), os.path.join(seq, "imu.csv"), shallow=False)
+    imu0 = yaml.safe_load(open(os.path.join(mav, "imu0", "sensor.yaml")))
+    assert imu0["rate_hz"] == 200 and imu0["gyroscope_noise_density"] == 0, imu0
+    state = np.loadtxt(os.path.join(mav, "state_groundtruth_estimate0", "data.csv"), delimiter=",", comments="#")
+    assert state.shape == (400, 17), state.shape
+    assert np.array_equal(state[:, 0], imu[:, 0])
+    # At the camera frames (every 20th reading) the state is the TUM ground truth (w first in EuRoC).
+    assert np.allclose(state[::20, 1:4], gt[:, 1:4], atol=1e-8)
+    assert np.allclose(state[::20, 4:8], gt[:, [7, 4, 5, 6]], atol=1e-9)
+    # Its velocity is the derivative of its positions, and noise "none" has no biases.
+    centre = (state[2:, 1:4] - state[:-2, 1:4]) / 0.01
+    assert np.max(np.abs(centre - state[1:-1, 8:11])) < 0.01, np.max(np.abs(centre - state[1:-1, 8:11]))
+    assert np.all(state[:, 11:17] == 0)
+    silva("export", one, "--format", "euroc", "--out", os.path.join(WORK, "export-one"), "--quiet")
+    assert filecmp.cmp(os.path.join(WORK, "export-one", "euroc", "mav0", "cam0", "sensor.yaml"),
+                       os.path.join(mav, "cam0", "sensor.yaml"), shallow=False)
+
     # The ADIS16448 model adds noise of its documented size to the same walk.
     noisy_dir = generate("noisy", 2, "adis16448")
     noisy = np.loadtxt(os.path.join(noisy_dir, "trajectory", "imu.csv"), delimiter=",", comments="#")
     spread = np.std(np.diff(noisy[:, 1:4] - imu[:, 1:4], axis=0))
     expected = np.sqrt(2 * 200) * 1.6968e-4
     assert abs(spread / expected - 1) < 0.15, f"gyro noise spread {spread}, expected {expected}"
+    # A dataset without the sequence has nothing to export as EuRoC: exit 2 naming what is missing.
+    plain = os.path.join(WORK, "plain")
+    silva("generate", "--seed", "3", "--out", plain, "--quiet", "--set", "output.resolution=32x24",
+          "--set", "captures.autopilot_points=1", "--set", "captures.random_count=0")
+    refused = silva("export", os.path.join(plain, f"{3:010d}"), "--format", "euroc", "--out", os.path.join(WORK, "x"),
+                    expect=2)
+    assert "needs the trajectory sequence" in refused.stderr, refused.stderr
     print("trajectory: 20 frames, 400 IMU readings; integration error", f"{max(errors):.4f} m")
 
 

@@ -108,6 +108,14 @@ TEST(Trajectory, MotionBlurSpansTheWalkWhileTheShutterIsOpen) {
   }
 }
 
+TEST(Trajectory, ALidarSweepEndsWhereTheWalkIsOneRevolutionLater) {
+  const WorldContext& ctx = walk_world();
+  const std::vector<PlannedFrame> frames = plan_trajectory(ctx);
+  const Trajectory walk(ctx);
+  for (int i : {0, 7, 599})
+    EXPECT_EQ(sweep_end_pose(ctx, frames[size_t(i)], 20.0), walk.at(i / 10.0 + 0.05).pose()) << i;
+}
+
 TEST(Trajectory, RunningPastTheTrailsEndIsRefusedNamingTheKeys) {
   WorldContext ctx = walk_world();
   ctx.config.trajectory.start_m = ctx.trail.nav.length() - 10.0;

@@ -57,14 +57,15 @@ Handler add_export_command(CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "export",
       "Convert a finished dataset (no re-rendering) into coco-panoptic, coco-instances, cityscapes, colmap, "
-      "nerfstudio, semantickitti (LiDAR) or rosbag2 (a ROS 2 bag per sequence, MCAP), each into "
+      "nerfstudio, semantickitti (LiDAR), rosbag2 (a ROS 2 bag per sequence, MCAP) or euroc (the trajectory "
+      "sequence with its IMU, as visual-inertial odometry reads it), each into "
       "<out>/<format>/; the dataset's images and scans are hard-linked (editing one in place edits the dataset "
       "too) unless --copy.");
   cmd->add_option("DIR", args->dir, "the dataset folder <output.dir>/<seed>/")->required();
   cmd->add_option("--format", args->formats,
-                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, rosbag2, or all "
-                  "(every camera format and rosbag2, and semantickitti when the dataset has lidar; several: "
-                  "comma-separated)")
+                  "coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio, semantickitti, rosbag2, euroc, or "
+                  "all (every camera format and rosbag2, semantickitti when the dataset has lidar, euroc when it has "
+                  "the trajectory sequence; several: comma-separated)")
       ->required()
       ->type_name("F");
   cmd->add_option("--out", args->out, "folder that receives one sub-folder per format (default DIR/export)")

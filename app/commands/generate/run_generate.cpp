@@ -91,8 +91,9 @@ void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, co
   }
 }
 
-/// Writes the trajectory sequence's IMU readings (imu.csv), their noise (imu.yaml) and its camera poses
-/// (groundtruth.txt, TUM) into <run_dir>/trajectory/ when the plan has that sequence.
+/// Writes the trajectory sequence's IMU readings (imu.csv), their noise (imu.yaml), the true state at each reading
+/// (state_groundtruth.csv, EuRoC) and its camera poses (groundtruth.txt, TUM) into <run_dir>/trajectory/ when the
+/// plan has that sequence.
 void write_trajectory_files(const world::WorldContext& ctx, const std::vector<world::PlannedFrame>& plan,
                             const fs::path& run_dir) {
   std::vector<double> times;
@@ -107,9 +108,10 @@ void write_trajectory_files(const world::WorldContext& ctx, const std::vector<wo
   const fs::path dir = run_dir / "trajectory";
   fs::create_directories(dir);
   const ImuNoise noise = world::imu_noise_model(tc.imu_noise);
-  const std::vector<ImuSample> imu =
-      world::imu_samples(world::Trajectory(ctx), tc.imu_hz, noise, uint64_t(ctx.config.seed));
+  const world::Trajectory walk(ctx);
+  const std::vector<ImuSample> imu = world::imu_samples(walk, tc.imu_hz, noise, uint64_t(ctx.config.seed));
   io::write_file_atomic(dir / "imu.csv", io::euroc_imu_csv(imu));
+  io::write_file_atomic(dir / "state_groundtruth.csv", io::euroc_state_csv(world::imu_states(walk, tc.imu_hz, imu)));
   io::write_file_atomic(dir / "imu.yaml", io::kalibr_imu_yaml(noise, tc.imu_hz));
   io::write_file_atomic(dir / "groundtruth.txt", io::tum_trajectory(times, poses));
 }
