@@ -5,18 +5,16 @@
 // cam0's principal point is Silva's − 0.5 px (Kalibr's pixel centres are integers).
 #include <cmath>
 #include <filesystem>
-#include <map>
-#include <sstream>
 #include <string>
 
 #include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
-#include "core/input_limits.hpp"
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
 #include "io/export_formats.hpp"
 #include "io/printf_string.hpp"
+#include "io/trajectory_files.hpp"
 
 namespace silva::io {
 
@@ -28,36 +26,6 @@ namespace {
 constexpr const char* kIdentityTbs =
     "T_BS:\n  cols: 4\n  rows: 4\n  data: [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0]\n";
 
-/// The "key: number" lines of the dataset's Kalibr imu.yaml; InputError naming it when one of `keys` is missing.
-std::map<std::string, double> kalibr_values(const fs::path& path, std::initializer_list<const char*> keys) {
-  require_dataset_file(path);
-  std::istringstream in(limits::read_input_file(path, "IMU file"));
-  std::map<std::string, double> values;
-  for (std::string line; std::getline(in, line);) {
-    const size_t colon = line.find(':');
-    if (line.empty() || line[0] == '#' || colon == std::string::npos) continue;
-    char* end = nullptr;
-    const std::string rest = line.substr(colon + 1);
-    const double v = std::strtod(rest.c_str(), &end);
-    if (end != rest.c_str() && std::isfinite(v)) values[line.substr(0, colon)] = v;
-  }
-  for (const char* key : keys)
-    if (!values.count(key)) throw InputError(path.string() + ": no number for '" + key + "' (a Kalibr imu.yaml)");
-  return values;
-}
-
-/// The trajectory's camera rate from the manifest; InputError unless a positive finite number.
-double camera_rate(const Dataset& d) {
-  const nlohmann::json& config = d.manifest.at("config");
-  const auto trajectory = config.find("trajectory");
-  if (trajectory != config.end() && trajectory->is_object() && trajectory->contains("camera_hz") &&
-      (*trajectory)["camera_hz"].is_number()) {
-    const double hz = (*trajectory)["camera_hz"].get<double>();
-    if (std::isfinite(hz) && hz > 0 && hz <= 1000) return hz;
-  }
-  throw InputError((d.dir / "manifest.json").string() + ": config.trajectory.camera_hz must be a number in (0, 1000]");
-}
-
 }  // namespace
 
 void export_euroc(const Dataset& d, const fs::path& out, const ExportOptions& options) {
@@ -68,7 +36,7 @@ void export_euroc(const Dataset& d, const fs::path& out, const ExportOptions& op
   if (frames.empty())
     throw InputError(d.dir.string() + ": euroc needs the trajectory sequence, which this dataset does not hold "
                      "(add \"trajectory\" to captures.sequences)");
-  const double hz = camera_rate(d);
+  const double hz = trajectory_camera_hz(d);
   const fs::path seq = d.dir / "trajectory", mav = out / "mav0";
   for (const char* folder : {"cam0/data", "imu0", "state_groundtruth_estimate0"}) create_folder(mav / folder);
   const auto stamp = [hz](const DatasetFrame& f) { return std::llround(double(f.frame) * 1e9 / hz); };
@@ -87,16 +55,14 @@ void export_euroc(const Dataset& d, const fs::path& out, const ExportOptions& op
                                       "intrinsics: [%.17g, %.17g, %.17g, %.17g]\n"
                                       "distortion_model: radial-tangential\ndistortion_coefficients: [0.0, 0.0, 0.0, 0.0]\n",
                                       hz, cam.width, cam.height, cam.fx, cam.fy, cam.cx - 0.5, cam.cy - 0.5));
-  const auto imu = kalibr_values(seq / "imu.yaml", {"update_rate", "gyroscope_noise_density", "gyroscope_random_walk",
-                                                    "accelerometer_noise_density", "accelerometer_random_walk"});
+  const KalibrImu imu = read_kalibr_imu_yaml(seq / "imu.yaml");
   write_file_atomic(mav / "imu0" / "sensor.yaml",
                     "sensor_type: imu\ncomment: Silva IMU, axes the camera's (x right, y down, z forward)\n" +
                         std::string(kIdentityTbs) +
                         printf_string("rate_hz: %.9g\ngyroscope_noise_density: %.9g\ngyroscope_random_walk: %.9g\n"
                                       "accelerometer_noise_density: %.9g\naccelerometer_random_walk: %.9g\n",
-                                      imu.at("update_rate"), imu.at("gyroscope_noise_density"),
-                                      imu.at("gyroscope_random_walk"), imu.at("accelerometer_noise_density"),
-                                      imu.at("accelerometer_random_walk")));
+                                      imu.rate_hz, imu.noise.gyro_noise_density, imu.noise.gyro_random_walk,
+                                      imu.noise.accel_noise_density, imu.noise.accel_random_walk));
   place_file(seq / "imu.csv", mav / "imu0" / "data.csv", options);
   place_file(seq / "state_groundtruth.csv", mav / "state_groundtruth_estimate0" / "data.csv", options);
 }

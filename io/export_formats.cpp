@@ -1,5 +1,7 @@
 #include "io/export_formats.hpp"
 
+#include <cmath>
+
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
@@ -51,6 +53,17 @@ std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, cons
     throw IoError("cannot encode " + source.string() + " as JPEG");
   write_file_atomic(images / (f.stem() + ".jpg"), jpeg);
   return f.stem() + ".jpg";
+}
+
+double trajectory_camera_hz(const Dataset& d) {
+  const nlohmann::json& config = d.manifest.at("config");
+  const auto trajectory = config.find("trajectory");
+  if (trajectory != config.end() && trajectory->is_object() && trajectory->contains("camera_hz") &&
+      (*trajectory)["camera_hz"].is_number()) {
+    const double hz = (*trajectory)["camera_hz"].get<double>();
+    if (std::isfinite(hz) && hz > 0 && hz <= 1000) return hz;
+  }
+  throw InputError((d.dir / "manifest.json").string() + ": config.trajectory.camera_hz must be a number in (0, 1000]");
 }
 
 void export_dataset(const Dataset& dataset, ExportFormat format, const std::filesystem::path& out,

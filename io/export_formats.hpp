@@ -58,6 +58,10 @@ std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, cons
 /// (truncated or damaged); IoError when neither link nor copy can be made.
 void place_file(const std::filesystem::path& from, const std::filesystem::path& to, const ExportOptions& options);
 
+/// The trajectory sequence's camera rate (config.trajectory.camera_hz of the manifest); InputError naming the
+/// manifest unless it is a number in (0, 1000].
+double trajectory_camera_hz(const Dataset& dataset);
+
 /// Parses a format name; InputError "<where>: unknown format 'x' (allowed: ...)" otherwise.
 ExportFormat parse_export_format(const std::string& name, const std::string& where);
 

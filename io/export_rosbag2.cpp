@@ -1,6 +1,7 @@
 // rosbag2 export (CONTRACT.md "Export formats"): per sequence a bag folder <sequence>/ holding
 // <sequence>_0.mcap (ROS 2 messages, CDR) and rosbag2's metadata.yaml, written frame by frame (memory bounded
 // by one frame and one MCAP chunk). Topics, frames and stamps are documented in CONTRACT.md.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -16,6 +17,7 @@
 #include "io/lidar_files.hpp"
 #include "io/mcap_writer.hpp"
 #include "io/ros2_messages.hpp"
+#include "io/trajectory_files.hpp"
 
 namespace silva::io {
 
@@ -130,24 +132,71 @@ std::string metadata_yaml(const std::string& file, const std::vector<Topic>& top
   return y.str();
 }
 
+/// The trajectory sequence's IMU readings (imu.csv, with imu.yaml's noise as covariances) for its bag's /imu
+/// topic, written between the frames in time order; inactive for every other sequence.
+class ImuTopic {
+ public:
+  ImuTopic(const Dataset& d, const std::string& sequence) {
+    if (sequence != "trajectory") return;
+    readings_ = read_euroc_imu_csv(d.dir / sequence / "imu.csv");
+    const KalibrImu model = read_kalibr_imu_yaml(d.dir / sequence / "imu.yaml");
+    gyro_variance_ = model.noise.gyro_noise_density * model.noise.gyro_noise_density * model.rate_hz;
+    accel_variance_ = model.noise.accel_noise_density * model.noise.accel_noise_density * model.rate_hz;
+    active_ = true;
+  }
+  /// True for the trajectory sequence.
+  bool active() const { return active_; }
+  /// Stamp of the first reading (the largest stamp when there is none).
+  uint64_t first_stamp() const { return readings_.empty() ? UINT64_MAX : uint64_t(readings_.front().t_ns); }
+  /// Stamp of the last reading (0 when there is none).
+  uint64_t last_stamp() const { return readings_.empty() ? 0 : uint64_t(readings_.back().t_ns); }
+  /// Writes the readings from index `next` up to time t with `put(topic, stamp, bytes)`, advancing `next`.
+  template <class Put>
+  void write_until(uint64_t t, size_t& next, const Put& put) const {
+    for (; next < readings_.size() && uint64_t(readings_[next].t_ns) <= t; ++next) {
+      const ImuSample& r = readings_[next];
+      const uint64_t at = uint64_t(r.t_ns);
+      put("/imu", at, encode_imu({at, kCameraFrame}, r.gyro, gyro_variance_, r.accel, accel_variance_));
+    }
+  }
+
+ private:
+  std::vector<ImuSample> readings_;
+  double gyro_variance_ = 0, accel_variance_ = 0;
+  bool active_ = false;
+};
+
+/// The topics of a bag of `d`: the poses and camera info always, each image and the LiDAR when the dataset has
+/// them, /imu with `imu`.
+std::vector<Topic> bag_topics(const Dataset& d, bool imu) {
+  std::vector<Topic> topics = {{"/tf_static", RosType::TFMessage, kLatchedQos},
+                               {"/tf", RosType::TFMessage, ""},
+                               {"/odom", RosType::Odometry, ""},
+                               {"/camera/camera_info", RosType::CameraInfo, ""}};
+  if (d.has("rgb")) topics.push_back({"/camera/image_raw", RosType::Image, ""});
+  if (d.has("depth") || d.has("depth_exr")) topics.push_back({"/camera/depth/image_raw", RosType::Image, ""});
+  if (d.has("semantic")) topics.push_back({"/camera/semantic/image_raw", RosType::Image, ""});
+  if (d.has("instance")) topics.push_back({"/camera/instance/image_raw", RosType::Image, ""});
+  if (d.has("lidar")) topics.push_back({"/lidar/points", RosType::PointCloud2, ""});
+  if (imu) topics.push_back({"/imu", RosType::Imu, ""});
+  return topics;
+}
+
 /// Writes one sequence's frames (`frames`, indices into d.frames in frame order) as the bag folder `bag`.
 void write_bag(const Dataset& d, const std::string& sequence, const std::vector<size_t>& frames, const fs::path& bag,
                const ExportOptions& options, size_t& done) {
   create_folder(bag);
   const std::string file = sequence + "_0.mcap";
   McapWriter mcap(bag / file, "ros2", "silva");
-  const bool lidar = d.has("lidar");
-  std::vector<Topic> topics = {{"/tf_static", RosType::TFMessage, kLatchedQos},
-                               {"/tf", RosType::TFMessage, ""},
-                               {"/odom", RosType::Odometry, ""},
-                               {"/camera/camera_info", RosType::CameraInfo, ""}};
-  const bool rgb = d.has("rgb"), depth = d.has("depth") || d.has("depth_exr"), semantic = d.has("semantic"),
-             instance = d.has("instance");
-  if (rgb) topics.push_back({"/camera/image_raw", RosType::Image, ""});
-  if (depth) topics.push_back({"/camera/depth/image_raw", RosType::Image, ""});
-  if (semantic) topics.push_back({"/camera/semantic/image_raw", RosType::Image, ""});
-  if (instance) topics.push_back({"/camera/instance/image_raw", RosType::Image, ""});
-  if (lidar) topics.push_back({"/lidar/points", RosType::PointCloud2, ""});
+  const bool lidar = d.has("lidar"), rgb = d.has("rgb"), depth = d.has("depth") || d.has("depth_exr"),
+             semantic = d.has("semantic"), instance = d.has("instance");
+  const ImuTopic imu(d, sequence);
+  std::vector<Topic> topics = bag_topics(d, imu.active());
+  const double camera_hz = imu.active() ? trajectory_camera_hz(d) : 0.0;
+  const auto stamp = [&](const DatasetFrame& f) {  // trajectory frames at their capture times
+    return imu.active() ? uint64_t(std::llround(double(f.frame) * 1e9 / camera_hz))
+                        : uint64_t(f.frame) * kRosbagFramePeriodNs;
+  };
   std::map<RosType, uint16_t> schema;
   std::map<std::string, uint16_t> channel;
   for (Topic& t : topics) {
@@ -162,14 +211,16 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
   const auto put = [&](const std::string& topic, uint64_t t, const std::vector<uint8_t>& bytes) {
     mcap.write(channel.at(topic), t, t, bytes);
   };
-  const uint64_t start = uint64_t(d.frames[frames.front()].frame) * kRosbagFramePeriodNs;
+  const uint64_t start = std::min(stamp(d.frames[frames.front()]), imu.first_stamp());
+  size_t next_imu = 0;
   std::vector<RosTransform> mounts = {{kBaseFrame, kCameraFrame, base_from_camera}};
   if (lidar) mounts.push_back({kBaseFrame, kLidarFrame, base_from_camera * beams.camera_from_lidar});
   put("/tf_static", start, encode_tf(start, mounts));
   uint64_t last = start;
   for (const size_t i : frames) {
     const DatasetFrame& f = d.frames[i];
-    const uint64_t t = uint64_t(f.frame) * kRosbagFramePeriodNs;
+    const uint64_t t = stamp(f);
+    imu.write_until(t, next_imu, put);
     const CameraRecord cam = read_camera_json(d.file(f, "camera", "json"));
     const Mat4d map_from_base = cam.camera.camera_to_world * base_from_camera.transpose();
     const std::vector<RosTransform> pose = {{kMapFrame, kBaseFrame, map_from_base}};
@@ -205,6 +256,8 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
     ++done;
     if (options.progress) options.progress(done, d.frames.size());
   }
+  imu.write_until(UINT64_MAX, next_imu, put);
+  last = std::max(last, imu.last_stamp());
   mcap.close();
   std::map<uint16_t, uint64_t> counts = mcap.message_counts();
   write_file_atomic(bag / "metadata.yaml", metadata_yaml(file, topics, counts, start, last));

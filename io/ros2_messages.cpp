@@ -40,6 +40,10 @@ const char* const kTwistWithCovariance = "geometry_msgs/Twist twist\nfloat64[36]
 const char* const kOdometry =
     "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/PoseWithCovariance pose\n"
     "geometry_msgs/TwistWithCovariance twist\n";
+const char* const kImu =
+    "std_msgs/Header header\ngeometry_msgs/Quaternion orientation\nfloat64[9] orientation_covariance\n"
+    "geometry_msgs/Vector3 angular_velocity\nfloat64[9] angular_velocity_covariance\n"
+    "geometry_msgs/Vector3 linear_acceleration\nfloat64[9] linear_acceleration_covariance\n";
 
 /// `main`, then each dependency after the separator rosbag2 uses.
 std::string definition(const char* main, std::initializer_list<std::pair<const char*, const char*>> deps) {
@@ -72,14 +76,14 @@ void put_pose(CdrWriter& w, const Mat4d& m) {
 }  // namespace
 
 const std::string& ros_type_name(RosType type) {
-  static const std::array<std::string, 5> names = {"sensor_msgs/msg/Image", "sensor_msgs/msg/CameraInfo",
+  static const std::array<std::string, 6> names = {"sensor_msgs/msg/Image", "sensor_msgs/msg/CameraInfo",
                                                    "sensor_msgs/msg/PointCloud2", "tf2_msgs/msg/TFMessage",
-                                                   "nav_msgs/msg/Odometry"};
+                                                   "nav_msgs/msg/Odometry", "sensor_msgs/msg/Imu"};
   return names[size_t(type)];
 }
 
 const std::string& ros_type_definition(RosType type) {
-  static const std::array<std::string, 5> texts = {
+  static const std::array<std::string, 6> texts = {
       definition(kImage, {{"std_msgs/Header", kHeader}, {"builtin_interfaces/Time", kTime}}),
       definition(kCameraInfo, {{"std_msgs/Header", kHeader},
                                {"builtin_interfaces/Time", kTime},
@@ -102,6 +106,10 @@ const std::string& ros_type_definition(RosType type) {
                              {"geometry_msgs/TwistWithCovariance", kTwistWithCovariance},
                              {"geometry_msgs/Twist", kTwist},
                              {"geometry_msgs/Vector3", kVector3}}),
+      definition(kImu, {{"std_msgs/Header", kHeader},
+                        {"builtin_interfaces/Time", kTime},
+                        {"geometry_msgs/Quaternion", kQuaternion},
+                        {"geometry_msgs/Vector3", kVector3}}),
   };
   return texts[size_t(type)];
 }
@@ -197,6 +205,25 @@ std::vector<uint8_t> encode_odometry(const RosHeader& header, const std::string&
   w.f64_array(zero, true);
   for (int i = 0; i < 6; ++i) w.f64(0.0);  // twist: unknown for still captures, reported as zero
   w.f64_array(zero, true);
+  return w.take();
+}
+
+std::vector<uint8_t> encode_imu(const RosHeader& header, const Vec3d& angular_velocity, double gyro_variance,
+                                const Vec3d& linear_acceleration, double accel_variance) {
+  CdrWriter w;
+  put_header(w, header);
+  for (double q : {0.0, 0.0, 0.0, 1.0}) w.f64(q);
+  std::array<double, 9> covariance{};
+  covariance[0] = -1.0;  // no orientation estimate
+  w.f64_array(covariance, true);
+  const auto put_vector = [&w](const Vec3d& v, double variance) {
+    for (int i = 0; i < 3; ++i) w.f64(v[i]);
+    std::array<double, 9> diagonal{};
+    diagonal[0] = diagonal[4] = diagonal[8] = variance;
+    w.f64_array(diagonal, true);
+  };
+  put_vector(angular_velocity, gyro_variance);
+  put_vector(linear_acceleration, accel_variance);
   return w.take();
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file The ROS 2 messages a Silva bag holds (sensor_msgs Image, CameraInfo, PointCloud2; tf2_msgs TFMessage;
-/// nav_msgs Odometry): their ros2msg definitions, as rosbag2 stores them in an MCAP schema, and their CDR encoding.
+/// nav_msgs Odometry, sensor_msgs Imu): their ros2msg definitions, as rosbag2 stores them in an MCAP schema, and their CDR encoding.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -12,7 +12,7 @@
 namespace silva::io {
 
 /// A message type a Silva bag uses.
-enum class RosType { Image, CameraInfo, PointCloud2, TFMessage, Odometry };
+enum class RosType { Image, CameraInfo, PointCloud2, TFMessage, Odometry, Imu };
 
 /// The full type name, e.g. "sensor_msgs/msg/Image".
 const std::string& ros_type_name(RosType type);
@@ -62,5 +62,10 @@ std::vector<uint8_t> encode_tf(uint64_t stamp_ns, std::span<const RosTransform> 
 
 /// nav_msgs/Odometry: the pose of `child_frame` in header.frame_id; twist and both covariances zero.
 std::vector<uint8_t> encode_odometry(const RosHeader& header, const std::string& child_frame, const Mat4d& pose);
+
+/// sensor_msgs/Imu of one reading: orientation unknown (orientation_covariance[0] = -1, REP 145), the angular
+/// velocity and linear acceleration with diagonal covariances of the variances given per axis.
+std::vector<uint8_t> encode_imu(const RosHeader& header, const Vec3d& angular_velocity, double gyro_variance,
+                                const Vec3d& linear_acceleration, double accel_variance);
 
 }  // namespace silva::io

@@ -1,9 +1,17 @@
 #include "io/trajectory_files.hpp"
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 
+#include "core/error.hpp"
+#include "core/input_limits.hpp"
+#include "io/dataset_reader.hpp"
 #include "io/printf_string.hpp"
 
 namespace silva::io {
@@ -46,6 +54,51 @@ std::string kalibr_imu_yaml(const ImuNoise& noise, double rate_hz) {
       "gyroscope_noise_density: %.9g  # rad/s/sqrt(Hz)\n"
       "gyroscope_random_walk: %.9g  # rad/s^2/sqrt(Hz)\n",
       rate_hz, noise.accel_noise_density, noise.accel_random_walk, noise.gyro_noise_density, noise.gyro_random_walk);
+}
+
+KalibrImu read_kalibr_imu_yaml(const std::filesystem::path& path) {
+  require_dataset_file(path);
+  std::istringstream in(limits::read_input_file(path, "IMU file"));
+  std::map<std::string, double> values;
+  for (std::string line; std::getline(in, line);) {
+    const size_t colon = line.find(':');
+    if (line.empty() || line[0] == '#' || colon == std::string::npos) continue;
+    const std::string rest = line.substr(colon + 1);
+    char* end = nullptr;
+    const double v = std::strtod(rest.c_str(), &end);
+    if (end != rest.c_str() && std::isfinite(v)) values[line.substr(0, colon)] = v;
+  }
+  const auto get = [&](const char* key) {
+    const auto it = values.find(key);
+    if (it == values.end()) throw InputError(path.string() + ": no number for '" + key + "' (a Kalibr imu.yaml)");
+    return it->second;
+  };
+  return {get("update_rate"),
+          {get("gyroscope_noise_density"), get("gyroscope_random_walk"), get("accelerometer_noise_density"),
+           get("accelerometer_random_walk")}};
+}
+
+std::vector<ImuSample> read_euroc_imu_csv(const std::filesystem::path& path) {
+  require_dataset_file(path);
+  std::istringstream in(limits::read_input_file(path, "IMU file"));
+  std::vector<ImuSample> samples;
+  int line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    if (line.empty() || line[0] == '#') continue;
+    ImuSample s;
+    long long t = 0;
+    int used = 0;
+    if (std::sscanf(line.c_str(), "%lld,%lf,%lf,%lf,%lf,%lf,%lf%n", &t, &s.gyro.x(), &s.gyro.y(), &s.gyro.z(),
+                    &s.accel.x(), &s.accel.y(), &s.accel.z(), &used) != 7 ||
+        size_t(used) != line.size() || !s.gyro.allFinite() || !s.accel.allFinite() ||
+        (!samples.empty() && t <= samples.back().t_ns))
+      throw InputError(path.string() + ": line " + std::to_string(line_number) +
+                       " is not 't_ns,wx,wy,wz,ax,ay,az' (finite numbers, timestamps increasing)");
+    s.t_ns = t;
+    samples.push_back(s);
+  }
+  return samples;
 }
 
 std::string tum_trajectory(std::span<const double> times_s, std::span<const Mat4d> camera_to_world) {

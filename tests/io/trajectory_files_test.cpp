@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <vector>
 
 namespace silva::io {
@@ -37,6 +41,30 @@ TEST(TrajectoryFiles, EurocStateCsvPutsTheQuaternionsWFirst) {
   EXPECT_EQ(csv.substr(csv.find('\n') + 1),
             "5000000,1.000000000,2.000000000,3.000000000,0.707106781187,0.000000000000,0.000000000000,0.707106781187,"
             "0.500000000,0.000000000,-0.250000000,1e-05,0,0,0,0,0.002\n");
+}
+
+TEST(TrajectoryFiles, ImuFilesReadBackWhatTheyWroteAndRefuseDamage) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "silva_imu_files";
+  std::filesystem::create_directories(dir);
+  const std::vector<ImuSample> samples = {{0, Vec3d(0.1, -0.2, 0.3), Vec3d(0, -9.81, 0)},
+                                          {5000000, Vec3d(0, 0, 1e-7), Vec3d(1.5, 2, -3)}};
+  std::ofstream(dir / "imu.csv") << euroc_imu_csv(samples);
+  std::ofstream(dir / "imu.yaml") << kalibr_imu_yaml({1.6968e-04, 1.9393e-05, 2.0e-3, 3.0e-3}, 200);
+  const std::vector<ImuSample> back = read_euroc_imu_csv(dir / "imu.csv");
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].t_ns, 5000000);
+  EXPECT_EQ(back[1].gyro, samples[1].gyro);
+  EXPECT_EQ(back[0].accel, samples[0].accel);
+  const KalibrImu yaml = read_kalibr_imu_yaml(dir / "imu.yaml");
+  EXPECT_EQ(yaml.rate_hz, 200);
+  EXPECT_EQ(yaml.noise.gyro_random_walk, 1.9393e-05);
+  for (const char* bad : {"0,1,2,3,4,5\n", "0,1,2,3,4,5,nan\n", "5,0,0,0,0,0,0\n5,0,0,0,0,0,0\n", "0,1,2,3,4,5,6x\n"}) {
+    std::ofstream(dir / "imu.csv", std::ios::trunc) << bad;
+    EXPECT_THROW(read_euroc_imu_csv(dir / "imu.csv"), InputError) << bad;
+  }
+  std::ofstream(dir / "imu.yaml", std::ios::trunc) << "update_rate: 200\n";
+  EXPECT_THROW(read_kalibr_imu_yaml(dir / "imu.yaml"), InputError);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(TrajectoryFiles, KalibrYamlNamesEveryNoiseParameter) {

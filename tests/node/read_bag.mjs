@@ -96,6 +96,13 @@ for await (const m of reader.readMessages()) {
     entry.child = msg.child_frame_id;
     entry.t = [p.position.x, p.position.y, p.position.z];
     entry.q = [p.orientation.x, p.orientation.y, p.orientation.z, p.orientation.w];
+  } else if (msg.angular_velocity) {
+    const v = (x) => [x.x, x.y, x.z];
+    Object.assign(entry, { gyro: v(msg.angular_velocity), accel: v(msg.linear_acceleration) });
+    Object.assign(entry, { orientation: [msg.orientation.x, msg.orientation.y, msg.orientation.z, msg.orientation.w] });
+    Object.assign(entry, { orientation_covariance: Array.from(msg.orientation_covariance) });
+    Object.assign(entry, { gyro_covariance: Array.from(msg.angular_velocity_covariance) });
+    Object.assign(entry, { accel_covariance: Array.from(msg.linear_acceleration_covariance) });
   } else if (msg.k) {
     Object.assign(entry, { width: msg.width, height: msg.height, k: Array.from(msg.k), p: Array.from(msg.p) });
     Object.assign(entry, { distortion_model: msg.distortion_model, d: Array.from(msg.d) });

@@ -11,6 +11,7 @@ import filecmp
 import json
 import os
 import shutil
+import subprocess
 import sys
 
 import cv2
@@ -170,6 +171,26 @@ def main():
     silva("export", one, "--format", "euroc", "--out", os.path.join(WORK, "export-one"), "--quiet")
     assert filecmp.cmp(os.path.join(WORK, "export-one", "euroc", "mav0", "cam0", "sensor.yaml"),
                        os.path.join(mav, "cam0", "sensor.yaml"), shallow=False)
+
+    # The ROS 2 bag carries the IMU too, read back by npm's MCAP and CDR readers (skipped without node).
+    node_dir = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "node")
+    if shutil.which("node") and os.path.isdir(os.path.join(node_dir, "node_modules", "@mcap")):
+        silva("export", two, "--format", "rosbag2", "--out", os.path.join(WORK, "bag"), "--quiet")
+        bag = os.path.join(WORK, "bag", "rosbag2", "trajectory", "trajectory_0.mcap")
+        result = subprocess.run(["node", os.path.join(node_dir, "read_bag.mjs"), bag], capture_output=True, text=True)
+        assert result.returncode == 0, result.stderr
+        messages = json.loads(result.stdout)["messages"]
+        readings = [m for m in messages if m["topic"] == "/imu"]
+        assert len(readings) == 400, len(readings)
+        assert [int(m["stamp"]) for m in readings] == list(imu[:, 0].astype(np.int64))
+        assert np.array_equal(np.array([m["gyro"] + m["accel"] for m in readings]), imu[:, 1:7])
+        assert readings[0]["frame_id"] == "camera_optical_frame" and readings[0]["orientation_covariance"][0] == -1
+        images = [int(m["stamp"]) for m in messages if m["topic"] == "/camera/image_raw"]
+        assert images == [i * 100_000_000 for i in range(20)], images
+        times = [int(m["log_time"]) for m in messages]
+        assert times == sorted(times), "bag messages out of time order"
+    else:
+        print("node or tests/node/node_modules missing: the bag's IMU is not read back")
 
     # The ADIS16448 model adds noise of its documented size to the same walk.
     noisy_dir = generate("noisy", 2, "adis16448")
