@@ -23,6 +23,7 @@
 #include "io/ontology_file.hpp"
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
+#include "io/trajectory_files.hpp"
 
 namespace silva::fuzz {
 
@@ -142,11 +143,18 @@ void label_png(std::string_view input) {
   }
 }
 
+/// A trajectory sequence's imu.csv.
+void imu_csv(std::string_view input) { io::read_euroc_imu_csv(scratch_file("imu.csv", input)); }
+
+/// A trajectory sequence's imu.yaml.
+void imu_yaml(std::string_view input) { io::read_kalibr_imu_yaml(scratch_file("imu.yaml", input)); }
+
 constexpr FuzzTarget kTargets[] = {
     {"config", config_file}, {"set", set_override}, {"pose_json", pose_json}, {"pose_csv", pose_csv},
     {"ontology", ontology},  {"lighting", lighting}, {"library", library},     {"gltf", gltf},
     {"glb", glb},            {"obj", obj},           {"marker", marker},  {"camera_json", camera_json},
     {"png", png},            {"manifest", dataset_manifest}, {"label_png", label_png},
+    {"imu_csv", imu_csv},    {"imu_yaml", imu_yaml},
 };
 
 }  // namespace
