@@ -1,5 +1,6 @@
 #include "io/dataset_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <cstdio>
@@ -36,6 +37,10 @@ bool Dataset::has(const std::string& type) const {
 
 fs::path Dataset::file(const DatasetFrame& f, const std::string& folder, const std::string& ext) const {
   return dir / f.sequence / frame_file(folder, f.frame, ext);
+}
+
+bool Dataset::has_sequence(const std::string& sequence) const {
+  return std::any_of(frames.begin(), frames.end(), [&](const DatasetFrame& f) { return f.sequence == sequence; });
 }
 
 void Dataset::require(const std::string& type, const std::string& what) const {

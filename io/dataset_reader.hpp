@@ -34,6 +34,8 @@ struct Dataset {
   std::vector<std::string> types;   ///< output.types of the run.
   std::vector<DatasetFrame> frames; ///< Every frame, in global order.
   int width = 0, height = 0;        ///< output.resolution of the run: every image's size.
+  /// True when the dataset has frames of `sequence` (e.g. "trajectory").
+  bool has_sequence(const std::string& sequence) const;
   /// True when the run wrote output type `type` (e.g. "semantic").
   bool has(const std::string& type) const;
   /// Path of frame `f`'s file in `folder` with extension `ext`, e.g. file(f, "rgb", "png").

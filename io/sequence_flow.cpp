@@ -62,8 +62,7 @@ int write_trajectory_flow(const fs::path& run_dir) {
   if (trajectory == config.end() || !trajectory->is_object() || !trajectory->contains("flow") ||
       (*trajectory)["flow"] != true)
     return 0;
-  if (std::none_of(d.frames.begin(), d.frames.end(), [](const DatasetFrame& f) { return f.sequence == "trajectory"; }))
-    return 0;
+  if (!d.has_sequence("trajectory")) return 0;
   return write_sequence_flow(d, "trajectory");
 }
 

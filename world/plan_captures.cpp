@@ -31,12 +31,6 @@ PlannedFrame make_frame(const WorldContext& ctx, const std::string& sequence, in
   return f;
 }
 
-/// Height above the ground and pitch of autopilot/random cameras for the configured perspective.
-std::pair<double, double> height_and_pitch(const Config& c) {
-  return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
-                           : std::pair{c.camera.ground_height, 0.0};
-}
-
 /// Wraps an angle in degrees to (-180, 180].
 double wrap_degrees(double a) {
   a = std::fmod(a, 360.0);
@@ -48,7 +42,7 @@ double wrap_degrees(double a) {
 /// The autopilot frame for point i, yaw k, at arc length s.
 PlannedFrame autopilot_frame(const WorldContext& ctx, int i, size_t k, double s) {
   const Config& c = ctx.config;
-  const auto [height, pitch] = height_and_pitch(c);
+  const auto [height, pitch] = camera_height_and_pitch(c);
   const auto& yaws = c.captures.autopilot_yaws;
   const Vec3d p = ctx.trail.nav.position(s);
   const Vec3d t = ctx.trail.nav.tangent(s);
@@ -130,7 +124,7 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
       for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
         if (s < 0.0 || s > length) continue;
         const Vec3d p = ctx.trail.nav.position(s);
-        const double z = terrain_height(ctx.terrain, p.x(), p.y()) + height_and_pitch(ctx.config).first;
+        const double z = terrain_height(ctx.terrain, p.x(), p.y()) + camera_height_and_pitch(ctx.config).first;
         if (probe.clear(Vec3d(p.x(), p.y(), z), aerial)) {
           found = s;
           break;
@@ -160,7 +154,7 @@ void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& fr
 
 std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {
   const Config& c = ctx.config;
-  const auto [height, pitch] = height_and_pitch(c);
+  const auto [height, pitch] = camera_height_and_pitch(c);
   const double half = 0.5 * c.world.extent;
   const CrownProfiles crowns(*ctx.library);
   std::vector<PlannedFrame> frames;
@@ -209,29 +203,29 @@ std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector
 }
 
 std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
-  const Trajectory walk(ctx);
+  const auto walk = std::make_shared<const Trajectory>(ctx);
   const TrajectoryConfig& tc = ctx.config.trajectory;
   const auto n = std::max<int64_t>(1, std::llround(tc.duration_s * tc.camera_hz));
   std::vector<PlannedFrame> frames;
   frames.reserve(size_t(n));
   for (int64_t i = 0; i < n; ++i) {
     const double t = double(i) / tc.camera_hz;
-    const RigState s = walk.at(t);
+    const RigState s = walk->at(t);
     PlannedFrame f = make_frame(ctx, "trajectory", int(i), s.position, s.yaw_deg, s.pitch_deg, s.roll_deg,
                                 ctx.config.captures.aerial);
     f.trail_s = s.trail_s;
     if (ctx.config.camera.motion_blur) {
       const double shutter = ctx.config.camera.shutter_s;
-      f.exposure_motion = ExposureMotion{shutter, walk.at(t - 0.5 * shutter).pose(), walk.at(t + 0.5 * shutter).pose()};
+      f.exposure_motion = ExposureMotion{shutter, walk->at(t - 0.5 * shutter).pose(), walk->at(t + 0.5 * shutter).pose()};
     }
+    f.walk = walk;
     frames.push_back(std::move(f));
   }
   return frames;
 }
 
 Mat4d sweep_end_pose(const WorldContext& ctx, const PlannedFrame& f, double rotation_hz) {
-  if (f.sequence == "trajectory")
-    return Trajectory(ctx).at(double(f.frame) / ctx.config.trajectory.camera_hz + 1.0 / rotation_hz).pose();
+  if (f.walk) return f.walk->at(double(f.frame) / ctx.config.trajectory.camera_hz + 1.0 / rotation_hz).pose();
   return autopilot_pose_along(ctx, f, ctx.config.camera.autopilot_speed / rotation_hz);
 }
 

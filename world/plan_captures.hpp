@@ -2,6 +2,7 @@
 /// @file The Plan phase: every capture pose of a run, in global frame order (CONTRACT.md
 /// "Capture sequences"): sequences in config order, then frame number within the sequence.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@
 #include "world/world_context.hpp"
 
 namespace silva::world {
+
+class Trajectory;
 
 /// How a planned autopilot or random pose met the clearance rules (world/pose_clearance.hpp).
 enum class PoseFix : uint8_t {
@@ -32,6 +35,7 @@ struct PlannedFrame {
   std::optional<double> trail_s;  ///< Arc length along the trail (autopilot and trajectory only).
   PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
   std::optional<ExposureMotion> exposure_motion;  ///< Camera motion while the shutter is open (motion blur), or still.
+  std::shared_ptr<const Trajectory> walk;  ///< The walk a trajectory frame lies on (one for all of them), else null.
 };
 
 /// Steepest slope a random pose may stand on (CONTRACT.md), degrees.
@@ -63,7 +67,7 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
 Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance);
 
 /// The camera-to-world pose of autopilot or trajectory frame `f` (it has trail_s) one LiDAR revolution
-/// (1 / rotation_hz seconds) after the frame: along the walk for trajectory frames, else autopilot_pose_along
+/// (1 / rotation_hz seconds) after the frame: along its walk for trajectory frames, else autopilot_pose_along
 /// by camera.autopilot_speed / rotation_hz metres.
 Mat4d sweep_end_pose(const WorldContext& ctx, const PlannedFrame& f, double rotation_hz);
 

@@ -26,12 +26,6 @@ Vec3d trail_point(const NavSpline& nav, double s) {
   return nav.position(c) + (s - c) * nav.tangent(c);
 }
 
-/// Camera height above the ground and pitch of the walk: the aerial ones with captures.aerial.
-std::pair<double, double> height_and_pitch(const Config& c) {
-  return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
-                           : std::pair{c.camera.ground_height, 0.0};
-}
-
 /// The walk's control points every kTrajectoryKnotStep seconds: the trail point at the nominal arc
 /// length, the ground under it plus the camera height, and the heading of the trail's chord there
 /// (degrees, unwrapped). InputError when the walk runs past the trail's end.
@@ -44,7 +38,7 @@ CubicBSpline walk_curve(const WorldContext& ctx) {
     throw InputError("trajectory: start_m + speed x duration_s = " + std::to_string(end) +
                      " m runs past the end of the trail (" + std::to_string(length) +
                      " m long); lower trajectory.duration_s, speed or start_m, or lengthen the trail");
-  const double height = height_and_pitch(c).first;
+  const double height = camera_height_and_pitch(c).first;
   const size_t n = size_t(std::ceil(tc.duration_s / kTrajectoryKnotStep)) + 4;
   std::vector<Eigen::Vector4d> control;
   control.reserve(n);
@@ -63,11 +57,16 @@ CubicBSpline walk_curve(const WorldContext& ctx) {
 
 }  // namespace
 
+std::pair<double, double> camera_height_and_pitch(const Config& c) {
+  return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
+                           : std::pair{c.camera.ground_height, 0.0};
+}
+
 Trajectory::Trajectory(const WorldContext& ctx)
     : duration_(ctx.config.trajectory.duration_s),
       start_m_(ctx.config.trajectory.start_m),
       speed_(ctx.config.trajectory.speed),
-      pitch_deg_(height_and_pitch(ctx.config).second),
+      pitch_deg_(camera_height_and_pitch(ctx.config).second),
       bob_m_(ctx.config.trajectory.bob_m),
       sway_deg_(ctx.config.trajectory.sway_deg),
       step_hz_(ctx.config.trajectory.step_hz),

@@ -2,6 +2,8 @@
 /// @file The continuous walk of the `trajectory` sequence (CONTRACT.md "Capture sequences"): a camera
 /// carried along the trail at trajectory.speed, its path and heading smoothed into C2 curves of time,
 /// with a walking bob and sway, so that velocity, acceleration and angular velocity are exact.
+#include <utility>
+
 #include "core/types.hpp"
 #include "world/cubic_bspline.hpp"
 #include "world/world_context.hpp"
@@ -12,6 +14,10 @@ namespace silva::world {
 inline constexpr double kGravity = 9.81;
 /// Time between the walk's control points, seconds: the curves smooth out detail shorter than this.
 inline constexpr double kTrajectoryKnotStep = 0.25;
+
+/// Height above the ground and pitch (degrees) of autopilot, random and trajectory cameras: camera.aerial_height
+/// and aerial_pitch_deg with captures.aerial, else camera.ground_height and 0.
+std::pair<double, double> camera_height_and_pitch(const Config& c);
 
 /// The camera's state at one time of the walk.
 struct RigState {

@@ -83,10 +83,7 @@ int run_export(const ExportRequest& request, const Reporter& reporter) {
     for (size_t i = 0; i < io::export_format_names().size(); ++i) {
       const auto format = io::ExportFormat(i);
       if (format == io::ExportFormat::SemanticKitti && !dataset.has("lidar")) continue;
-      if (format == io::ExportFormat::Euroc &&
-          std::none_of(dataset.frames.begin(), dataset.frames.end(),
-                       [](const io::DatasetFrame& f) { return f.sequence == "trajectory"; }))
-        continue;
+      if (format == io::ExportFormat::Euroc && !dataset.has_sequence("trajectory")) continue;
       if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
     }
   check_export_location(request.run_dir, request.out_dir, formats);
