@@ -135,7 +135,7 @@ void BM_WholeSet(benchmark::State& s) {
     size_t total = 0;
     arena.execute([&] {
       for (const auto& f : io::encode_capture_set(fixture().g, fixture().rgb, fixture().ontology,
-                                                  io::OutputSelection::all(), 0))
+                                                  io::OutputSelection::all(), 0, false))
         total += f.bytes.size();
     });
     return total;

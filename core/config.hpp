@@ -137,6 +137,14 @@ struct TrajectoryConfig {
   bool flow = false;                ///< trajectory.flow: optical flow between consecutive frames
 };
 
+/// [rig]: the cameras each capture renders.
+struct RigConfig {
+  std::string preset = "mono";  ///< rig.preset: "mono" (one camera) or "stereo" (a rectified pair)
+  double baseline_m = 0.12;     ///< rig.baseline_m: stereo baseline, metres (the right camera along the left's +x)
+  /// The baseline of the right camera, metres: baseline_m for a stereo rig, 0 for one camera.
+  double stereo_baseline_m() const { return preset == "stereo" ? baseline_m : 0.0; }
+};
+
 /// Every config key, resolved (defaults = thesis defaults).
 struct Config {
   int64_t seed = 0;          ///< seed (0..9 999 999 999); drawn from the clock when absent
@@ -151,6 +159,7 @@ struct Config {
   RenderConfig render;       ///< [render]
   LidarConfig lidar;         ///< [lidar]
   TrajectoryConfig trajectory;  ///< [trajectory]
+  RigConfig rig;             ///< [rig]
 };
 
 }  // namespace silva

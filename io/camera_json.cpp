@@ -72,6 +72,7 @@ std::string camera_json(const CameraRecord& r) {
   j["trail_s"] = r.trail_s ? nlohmann::ordered_json(*r.trail_s) : nlohmann::ordered_json(nullptr);
   j["camera_model"] = camera_model_json(r.model);
   if (r.lighting) j["lighting"] = lighting_json(*r.lighting);
+  if (r.stereo) j["stereo"] = {{"camera", r.stereo->right ? "right" : "left"}, {"baseline_m", r.stereo->baseline_m}};
   return j.dump(2) + "\n";
 }
 
@@ -105,6 +106,19 @@ void check_camera(const Camera& c, const std::vector<std::vector<double>>& k, co
           "and 'far' need 0 < near < far, finite");
 }
 
+/// The "stereo" object: camera "left" or "right", baseline_m in 0.01 ... 2 metres (config rig.baseline_m's range).
+StereoRecord parse_stereo(const nlohmann::json& j, const std::string& source) {
+  StereoRecord r;
+  const std::string camera = json_string(j, "camera", source);
+  if (camera != "left" && camera != "right")
+    throw InputError(source + ": 'camera' must be \"left\" or \"right\", got \"" + camera + "\"");
+  r.right = camera == "right";
+  r.baseline_m = json_number(j, "baseline_m", source);
+  if (!(r.baseline_m >= 0.01 && r.baseline_m <= 2))
+    throw InputError(source + ": 'baseline_m' must be 0.01 ... 2 metres");
+  return r;
+}
+
 }  // namespace
 
 CameraRecord parse_camera_json(const std::string& text, const std::string& source) {
@@ -134,6 +148,7 @@ CameraRecord parse_camera_json(const std::string& text, const std::string& sourc
   if (!json_member(j, "trail_s", source).is_null()) r.trail_s = json_number(j, "trail_s", source);
   r.model = parse_camera_model(j, source);
   if (j.contains("lighting")) r.lighting = parse_lighting(json_member(j, "lighting", source), source + ": lighting");
+  if (j.contains("stereo")) r.stereo = parse_stereo(json_member(j, "stereo", source), source + ": stereo");
   return r;
 }
 

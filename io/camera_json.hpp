@@ -29,6 +29,13 @@ struct LightingRecord {
   bool operator==(const LightingRecord&) const = default;
 };
 
+/// The camera's place in a stereo pair (CONTRACT.md "File formats"): written by a stereo rig, else absent.
+struct StereoRecord {
+  bool right = false;     ///< The right camera ("right" in the file), else the left ("left").
+  double baseline_m = 0;  ///< Distance between the pair's optical centres, metres (the right is along the left's +x).
+  bool operator==(const StereoRecord&) const = default;
+};
+
 /// Everything a camera file holds.
 struct CameraRecord {
   int frame = 0;                        ///< Frame number within the sequence.
@@ -39,6 +46,7 @@ struct CameraRecord {
   std::optional<double> trail_s;        ///< Arc length along the trail (autopilot) or none (null).
   CameraModel model;                    ///< Sensor noise and optics applied to the frame's RGB.
   std::optional<LightingRecord> lighting;  ///< The frame's lighting, when randomised or auto-exposed.
+  std::optional<StereoRecord> stereo;      ///< The camera's place in a stereo pair, or none (one camera).
 };
 
 /// The camera file's text (keys in CONTRACT.md order, doubles printed to round-trip exactly).

@@ -204,13 +204,14 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
   const WeatherLook look(lit.weather);
   const SurfaceLighting lighting(sky, fog, in.preset);
-  float ev100 = lit.ev100 - in.exposure_compensation_ev;
+  const bool metered = in.auto_exposure && !in.ev100;
+  float ev100 = in.ev100 ? *in.ev100 : lit.ev100 - in.exposure_compensation_ev;
   float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
-  const bool whole_frame = needs_whole_frame(in.model) || in.auto_exposure;
+  const bool whole_frame = needs_whole_frame(in.model) || metered;
   LinearFrame frame, scratch;
   if (whole_frame) frame.resize(g.width, g.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
@@ -249,7 +250,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     bare_soil += terms.bare_soil;
   });
   if (whole_frame) {
-    if (in.auto_exposure) {
+    if (metered) {
       ev100 = ev100_for_luminance(log_average_luminance(frame)) - in.exposure_compensation_ev;
       exposure = exposure_multiplier(ev100);
     }

@@ -1,6 +1,7 @@
 #pragma once
 /// @file The RGB pass: G-buffer + camera + lighting preset (+ sun shadow map) -> 8-bit sRGB image.
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct ShadeInputs {
   float exposure_compensation_ev = 0.0f;  ///< EV added to the image's brightness (the EV100 used is lowered by it).
   Vec3f white_balance = Vec3f::Ones();    ///< Per-channel gains of the camera's white balance (render/frame_lighting.hpp).
   float fallen_leaves = 0.0f;             ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
+  /// Expose with this EV100 (compensation included), neither metered nor the preset's: a stereo pair's right
+  /// camera takes its left's, as a rig with synchronised exposure does.
+  std::optional<float> ev100 = std::nullopt;
 };
 
 /// What shading saw, for the run's statistics.

@@ -8,6 +8,7 @@
 #include "core/stopwatch.hpp"
 #include "render/shadow_plan.hpp"
 #include "systems/prepare_scene.hpp"
+#include "world/stereo_rig.hpp"
 #include "world/terrain.hpp"
 #include "world/world_context.hpp"
 
@@ -29,6 +30,33 @@ std::shared_ptr<FrameWork> FrameSlots::take() {
   });
 }
 
+namespace {
+
+/// Renders `camera`'s G-buffer into `work` and counts the pass.
+void render_camera(const render::Scene& scene, const Camera& camera, const render::RenderOptions& options,
+                   render::Renderer& renderer, FrameWork& work) {
+  const Stopwatch clock;
+  render::RenderStats stats;
+  renderer.render_gbuffer(scene, camera, options, work.gbuffer, &stats);
+  work.render_s = clock.seconds();
+  work.triangles_submitted = stats.triangles_submitted;
+  work.triangles_rasterised = stats.triangles_rasterised;
+  work.shadow_s = 0;
+}
+
+/// Renders the stereo pair's right camera of `work` into work.right (its lighting is work's).
+void render_right(const render::Scene& scene, const render::RenderOptions& options, double baseline_m,
+                  render::Renderer& renderer, FrameWork& work) {
+  if (!work.right) work.right = std::make_unique<FrameWork>();
+  FrameWork& right = *work.right;
+  right.frame = world::stereo_right(work.frame, baseline_m);
+  right.lighting = work.lighting;
+  right.files.clear();
+  render_camera(scene, right.frame.camera, options, renderer, right);
+}
+
+}  // namespace
+
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   render::Renderer& renderer, FrameWork& work) {
   const Camera& camera = work.frame.camera;
@@ -36,15 +64,10 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
                                          uint64_t(work.frame.frame));
   render::RenderOptions options;
   options.lod = ctx.config.render.lod;
-  Stopwatch clock;
-  render::RenderStats stats;
-  renderer.render_gbuffer(scene, camera, options, work.gbuffer, &stats);
-  work.render_s = clock.seconds();
-  work.triangles_submitted = stats.triangles_submitted;
-  work.triangles_rasterised = stats.triangles_rasterised;
-  work.shadow_s = 0;
+  render_camera(scene, camera, options, renderer, work);
+  if (settings.stereo_baseline_m > 0) render_right(scene, options, settings.stereo_baseline_m, renderer, work);
   if (!settings.outputs.has(io::OutputType::Rgb)) return;
-  clock.restart();
+  const Stopwatch clock;
   const Vec3d sun = render::sun_direction(work.lighting.preset).cast<double>();
   const Vec3d p = camera.position();
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());

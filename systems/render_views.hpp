@@ -29,6 +29,7 @@ struct CaptureSettings {
   io::OutputSelection outputs;       ///< Output types to write.
   std::filesystem::path run_dir;     ///< <output.dir>/<seed>/.
   raycast::LidarPreset lidar;        ///< The LiDAR model of output type lidar.
+  double stereo_baseline_m = 0;      ///< Baseline of the stereo pair's right camera, metres (0: one camera).
 };
 
 /// One frame travelling from Render through Write; its buffers are reused across frames.
@@ -48,6 +49,9 @@ struct FrameWork {
   uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
   std::vector<LidarPoint> lidar;     ///< The frame's LiDAR sweep (empty when lidar is not selected).
   double lidar_s = 0;                ///< Wall time of the sweep (scene update and cast).
+  /// The stereo pair's right view (rendered when CaptureSettings::stereo_baseline_m > 0, else left as it was): this
+  /// frame's lighting, shaded with this frame's shadow map; its own `right`, `shadow` and `lidar` stay unused.
+  std::unique_ptr<FrameWork> right;
 };
 
 /// Resource: the renderer, the frame slots (recycled, so each in-flight frame's big buffers are
@@ -67,7 +71,8 @@ class FrameSlots {
   std::shared_ptr<Pool> pool_ = std::make_shared<Pool>();
 };
 
-/// Renders `work.frame`'s G-buffer (and its shadow map when rgb is selected) from `scene`.
+/// Renders `work.frame`'s G-buffer (and its shadow map when rgb is selected) from `scene`, and with a stereo
+/// baseline the right camera's G-buffer into work.right.
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   render::Renderer& renderer, FrameWork& work);
 

@@ -14,6 +14,8 @@
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
+#include "io/disparity.hpp"
+#include "io/png_writer.hpp"
 #include "io/label_planes.hpp"
 #include "io/lidar_files.hpp"
 #include "render/edge_aa.hpp"
@@ -61,8 +63,8 @@ std::optional<io::LightingRecord> lighting_record(const FrameWork& work, bool rg
   return r;
 }
 
-/// The camera record of a planned frame.
-io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& f) {
+/// The camera record of a planned frame (`stereo_baseline_m` > 0: one camera of a stereo pair).
+io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& f, double stereo_baseline_m) {
   io::CameraRecord r;
   r.frame = f.frame;
   r.sequence = f.sequence;
@@ -73,14 +75,17 @@ io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& 
   r.roll_deg = f.roll_deg;
   r.trail_s = f.trail_s;
   r.model = frame_camera_model(config, f);
+  if (stereo_baseline_m > 0) r.stereo = io::StereoRecord{f.right, stereo_baseline_m};
   return r;
 }
 
-/// Shades RGB (when selected) and encodes every selected output of `work`.
-void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+/// Shades RGB (when selected, with `shadow` and, given one, the EV100 `ev100`) and encodes every selected output of
+/// `work`; the LiDAR sweep's files too when it has one.
+void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work,
+                           const render::ShadowMap& shadow, std::optional<float> ev100) {
   const world::PlannedFrame& f = work.frame;
   if (settings.outputs.has(io::OutputType::Rgb)) {
-    shade_frame(ctx, work);
+    shade_frame(ctx, work, shadow, ev100);
   } else {
     work.shade_s = 0;
     work.bare_soil_pixels = 0;
@@ -89,12 +94,12 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
   const Stopwatch clock;
   const io::LabelPlanes planes = label_planes(work.gbuffer);
-  work.files = io::encode_capture_set(planes, work.rgb, settings.ontology, settings.outputs, f.frame);
+  work.files = io::encode_capture_set(planes, work.rgb, settings.ontology, settings.outputs, f.frame, f.right);
   const io::OutputSelection& out = settings.outputs;
   work.card = io::count_planes(planes, work.lidar, settings.ontology, out.has(io::OutputType::Semantic),
                                out.has(io::OutputType::Instance), out.has(io::OutputType::Depth),
                                out.has(io::OutputType::Lidar));
-  if (settings.outputs.has(io::OutputType::Lidar)) {
+  if (settings.outputs.has(io::OutputType::Lidar) && !f.right) {
     io::LidarLabels labels = io::semantic_kitti_labels(work.lidar, settings.ontology);
     work.files.push_back({io::frame_file("lidar", f.frame, "bin"), io::kitti_scan(work.lidar)});
     work.files.push_back({io::frame_file("lidar_labels", f.frame, "label"), std::move(labels.labels)});
@@ -102,6 +107,20 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
                           std::vector<uint8_t>(labels.instances_json.begin(), labels.instances_json.end())});
   }
   work.encode_s = clock.seconds();
+}
+
+/// Shades and encodes `work`'s view, and with a stereo baseline the left camera's disparity and the right
+/// camera's view (the left's shadow map and exposure).
+void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
+  shade_and_encode_view(ctx, settings, work, work.shadow, std::nullopt);
+  if (settings.stereo_baseline_m <= 0) return;
+  const Stopwatch clock;
+  const Camera& camera = work.frame.camera;
+  const std::vector<uint16_t> disparity = io::kitti_disparity(work.gbuffer.depth, camera.fx, settings.stereo_baseline_m);
+  work.files.push_back({io::frame_file("disparity", work.frame.frame, "png"),
+                        io::encode_png_grey16(disparity, camera.width, camera.height)});
+  work.encode_s += clock.seconds();
+  shade_and_encode_view(ctx, settings, *work.right, work.shadow, work.ev100);
 }
 
 /// InputError when `path` is a symbolic link (Silva writes only into real folders of the run folder).
@@ -112,16 +131,15 @@ void refuse_link(const fs::path& path) {
                      "inside the run folder (replace the link with a folder)");
 }
 
-/// Writes `work`'s files and camera JSON and adds the frame to the writer's stats.
-void write_frame(const Config& config, const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
+/// Writes one camera's files and camera JSON; adds its bytes and step times to `stats`.
+void write_view(const Config& config, const CaptureSettings& settings, const FrameWork& work, CaptureStats& stats) {
   const Stopwatch clock;
-  CaptureStats& stats = writer.stats;
   const fs::path seq = settings.run_dir / work.frame.sequence;
   for (const io::EncodedFile& file : work.files) {
     io::write_file_atomic(seq / file.relative_path, file.bytes);
     stats.bytes_written += file.bytes.size();
   }
-  io::CameraRecord record = camera_record(config, work.frame);
+  io::CameraRecord record = camera_record(config, work.frame, settings.stereo_baseline_m);
   record.lighting = lighting_record(work, settings.outputs.has(io::OutputType::Rgb));
   const std::string camera = io::camera_json(record);
   io::write_file_atomic(settings.run_dir / camera_file(work.frame), camera);
@@ -131,10 +149,18 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   stats.shadow_s += work.shadow_s;
   stats.shade_s += work.shade_s;
   stats.encode_s += work.encode_s;
-  stats.lidar_s += work.lidar_s;
-  stats.lidar_points += work.lidar.size();
   stats.triangles_submitted += work.triangles_submitted;
   stats.triangles_rasterised += work.triangles_rasterised;
+}
+
+/// Writes `work`'s files and camera JSON (the right camera's first, so the left camera file, written last, marks
+/// the frame complete) and adds the frame to the writer's stats; labels are counted for the left camera.
+void write_frame(const Config& config, const CaptureSettings& settings, const FrameWork& work, DatasetWriter& writer) {
+  CaptureStats& stats = writer.stats;
+  if (settings.stereo_baseline_m > 0) write_view(config, settings, *work.right, stats);
+  write_view(config, settings, work, stats);
+  stats.lidar_s += work.lidar_s;
+  stats.lidar_points += work.lidar.size();
   for (int r = 0; r < kRoleCount; ++r) stats.pixels_by_role[size_t(r)] += work.pixels_by_role[size_t(r)];
   stats.bare_soil_pixels += work.bare_soil_pixels;
   io::add_label_counts(stats.card.totals, work.card);
@@ -145,16 +171,19 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 
 }  // namespace
 
-void shade_frame(const world::WorldContext& ctx, FrameWork& work) {
+void shade_frame(const world::WorldContext& ctx, FrameWork& work, const render::ShadowMap& shadow,
+                 std::optional<float> ev100) {
   const world::PlannedFrame& f = work.frame;
   const Stopwatch clock;
   const render::FrameLighting& lighting = work.lighting;
+  const std::string noise_stream = io::camera_folder(f.sequence, f.right);
   const render::ShadeInputs in{work.gbuffer,     f.camera,
-                               lighting.preset,  &work.shadow,
-                               uint64_t(ctx.config.seed), f.sequence,
+                               lighting.preset,  &shadow,
+                               uint64_t(ctx.config.seed), noise_stream,
                                uint64_t(f.frame), frame_camera_model(ctx.config, f),
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
-                               lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config))};
+                               lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config)),
+                               ev100};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;
@@ -170,15 +199,20 @@ io::LabelPlanes label_planes(const render::GBuffer& g) {
 }
 
 fs::path camera_file(const world::PlannedFrame& frame) {
-  return fs::path(frame.sequence) / io::frame_file("camera", frame.frame, "json");
+  return fs::path(frame.sequence) / io::frame_file(io::camera_folder("camera", frame.right), frame.frame, "json");
 }
 
 void create_output_folders(const fs::path& run_dir, const std::vector<world::PlannedFrame>& frames,
-                           const io::OutputSelection& outputs) {
+                           const io::OutputSelection& outputs, bool stereo) {
   std::vector<std::string> names = {"camera"};
   for (int t = 0; t < io::kOutputTypeCount; ++t)
     if (outputs.has(io::OutputType(t))) names.push_back(io::output_type_name(io::OutputType(t)));
   if (outputs.has(io::OutputType::Lidar)) names.push_back("lidar_labels");
+  if (stereo) {
+    for (size_t k = 0, n = names.size(); k < n; ++k)
+      if (names[k] != "lidar" && names[k] != "lidar_labels") names.push_back(io::camera_folder(names[k], true));
+    names.push_back("disparity");
+  }
   std::vector<std::string> sequences;
   for (const world::PlannedFrame& f : frames)
     if (std::find(sequences.begin(), sequences.end(), f.sequence) == sequences.end()) sequences.push_back(f.sequence);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 
 #include "ecs/ordered_stage.hpp"
 #include "ecs/world.hpp"
@@ -54,10 +55,11 @@ struct DatasetWriter {
   int total = 0;                             ///< Frames the run captures (for progress).
 };
 
-/// Shades `work`'s RGB from its G-buffer and shadow map under its lighting (work.lighting) as a capture
-/// does (the frame's camera model, edge antialiasing when camera.antialias), into work.rgb; sets shade_s,
-/// bare_soil_pixels and ev100.
-void shade_frame(const world::WorldContext& ctx, FrameWork& work);
+/// Shades `work`'s RGB from its G-buffer and `shadow` under its lighting (work.lighting) as a capture does (the
+/// frame's camera model, edge antialiasing when camera.antialias; exposed with `ev100` when given), into work.rgb;
+/// sets shade_s, bare_soil_pixels and ev100.
+void shade_frame(const world::WorldContext& ctx, FrameWork& work, const render::ShadowMap& shadow,
+                 std::optional<float> ev100);
 
 /// The planes the label encoders read, viewing `g`.
 io::LabelPlanes label_planes(const render::GBuffer& g);
@@ -65,10 +67,11 @@ io::LabelPlanes label_planes(const render::GBuffer& g);
 /// Sequence-relative path of a frame's camera file, whose presence marks the frame complete.
 std::filesystem::path camera_file(const world::PlannedFrame& frame);
 
-/// Creates the output folders of `frames`' sequences under `run_dir` for the selected outputs; InputError when
+/// Creates the output folders of `frames`' sequences under `run_dir` for the selected outputs (with `stereo`, the
+/// right camera's and disparity/ too); InputError when
 /// a sequence folder or one of its output folders is a symbolic link.
 void create_output_folders(const std::filesystem::path& run_dir, const std::vector<world::PlannedFrame>& frames,
-                           const io::OutputSelection& outputs);
+                           const io::OutputSelection& outputs, bool stereo);
 
 /// Registers "write_dataset" (phase Write) and its std::unique_ptr<DatasetWriter> resource (set its
 /// progress and total before the frames run): hands FrameSlots::current to the writer's stage:

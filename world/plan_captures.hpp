@@ -36,6 +36,7 @@ struct PlannedFrame {
   PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
   std::optional<ExposureMotion> exposure_motion;  ///< Camera motion while the shutter is open (motion blur), or still.
   std::shared_ptr<const Trajectory> walk;  ///< The walk a trajectory frame lies on (one for all of them), else null.
+  bool right = false;             ///< The right camera of a stereo pair (false: the mono or left camera).
 };
 
 /// Steepest slope a random pose may stand on (CONTRACT.md), degrees.

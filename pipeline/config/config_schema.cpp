@@ -207,6 +207,12 @@ std::vector<ConfigKey> build_schema() {
       {"trajectory.flow", T::Bool,
        "write the exact optical flow between consecutive trajectory frames (needs output type depth or depth_exr)", {},
        {}, [](Config& c) -> FieldRef { return &c.trajectory.flow; }},
+      {"rig.preset", T::String,
+       "cameras of each capture: mono (one) or stereo (a rectified pair, right camera rig.baseline_m along the "
+       "left's x; the left is the mono camera)", {}, {"mono", "stereo"},
+       [](Config& c) -> FieldRef { return &c.rig.preset; }},
+      {"rig.baseline_m", T::Float, "stereo baseline, metres", between(0.01, 2), {},
+       [](Config& c) -> FieldRef { return &c.rig.baseline_m; }},
       {"lidar.preset", T::String,
        "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
        "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},

@@ -80,7 +80,7 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   const Stopwatch run_clock;
   queue_cameras(frames);
   CaptureQueue& queue = world_.resource<CaptureQueue>();
-  systems::create_output_folders(settings.run_dir, frames, settings.outputs);
+  systems::create_output_folders(settings.run_dir, frames, settings.outputs, settings.stereo_baseline_m > 0);
   world_.resource<systems::CaptureSettings>() = std::move(settings);
   systems::DatasetWriter& writer = *world_.resource<std::unique_ptr<systems::DatasetWriter>>();
   writer.stats = {};

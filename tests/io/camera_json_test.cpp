@@ -169,6 +169,28 @@ TEST(CameraJson, RefusesCamerasNoReaderCanProjectWith) {
 namespace silva::io {
 namespace {
 
+TEST(CameraJson, StereoRecordRoundTripsAndIsCheckedWhenPresent) {
+  CameraRecord r = sample(false);
+  EXPECT_EQ(camera_json(r).find("\"stereo\""), std::string::npos);  // one camera: no stereo key
+  r.stereo = StereoRecord{true, 0.12};
+  const std::string text = camera_json(r);
+  EXPECT_NE(text.find("\"camera\": \"right\""), std::string::npos);
+  const CameraRecord back = parse_camera_json(text, "cam.json");
+  ASSERT_TRUE(back.stereo.has_value());
+  EXPECT_EQ(*back.stereo, *r.stereo);
+  nlohmann::json j = nlohmann::json::parse(text);
+  j["stereo"]["camera"] = "middle";
+  EXPECT_THROW(parse_camera_json(j.dump(), "cams/000001.json"), InputError);
+  j["stereo"]["camera"] = "left";
+  j["stereo"]["baseline_m"] = -0.12;
+  try {
+    parse_camera_json(j.dump(), "cams/000001.json");
+    FAIL() << "a negative baseline was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("baseline_m"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CameraJson, LightingRecordRoundTripsAndIsAbsentWhenUnset) {
   CameraRecord r = sample(false);
   EXPECT_EQ(camera_json(r).find("\"lighting\""), std::string::npos);  // files without it keep their bytes

@@ -34,7 +34,7 @@ std::map<std::string, cv::Mat> write_and_read_set(const std::filesystem::path& d
 
 TEST(CaptureSet, FileNamesFollowTheLayout) {
   const auto g = test::synthetic_gbuffer();
-  const auto set = encode_capture_set(g, grainy_rgb(g.width, g.height), default_ontology(), OutputSelection::all(), 42);
+  const auto set = encode_capture_set(g, grainy_rgb(g.width, g.height), default_ontology(), OutputSelection::all(), 42, false);
   std::vector<std::string> names;
   for (const auto& f : set) names.push_back(f.relative_path);
   EXPECT_EQ(names, (std::vector<std::string>{"rgb/000042.png", "semantic/000042.png", "semantic_color/000042.png",
@@ -48,7 +48,7 @@ TEST(CaptureSet, EveryOutputRoundTripsThroughOpenCv) {
   const auto g = test::synthetic_gbuffer();
   const auto rgb = grainy_rgb(g.width, g.height);
   const Ontology o = default_ontology();
-  const auto set = encode_capture_set(g, rgb, o, OutputSelection::all(), 3);
+  const auto set = encode_capture_set(g, rgb, o, OutputSelection::all(), 3, false);
   auto img = write_and_read_set(dir, set);
   const cv::Mat& c = img["rgb/000003.png"];
   const cv::Mat& sem = img["semantic/000003.png"];
@@ -103,7 +103,7 @@ TEST(CaptureSet, BytesIdenticalAcrossEncodesAndThreadCounts) {
   auto encode_with = [&](int threads) {
     tbb::task_arena arena(threads);
     EncodedSet set;
-    arena.execute([&] { set = encode_capture_set(g, rgb, default_ontology(), OutputSelection::all(), 0); });
+    arena.execute([&] { set = encode_capture_set(g, rgb, default_ontology(), OutputSelection::all(), 0, false); });
     return set;
   };
   const EncodedSet a = encode_with(1), b = encode_with(2), c = encode_with(2);
@@ -117,10 +117,29 @@ TEST(CaptureSet, BytesIdenticalAcrossEncodesAndThreadCounts) {
 
 TEST(CaptureSet, OnlySelectedOutputsAndNoRgbNeeded) {
   const auto g = test::synthetic_gbuffer();
-  const auto set = encode_capture_set(g, {}, default_ontology(), OutputSelection::from_names({"depth_preview", "semantic"}), 1);
+  const auto set = encode_capture_set(g, {}, default_ontology(), OutputSelection::from_names({"depth_preview", "semantic"}), 1, false);
   ASSERT_EQ(set.size(), 2u);
   EXPECT_EQ(set[0].relative_path, "semantic/000001.png");
   EXPECT_EQ(set[1].relative_path, "depth_preview/000001.png");
+}
+
+TEST(CaptureSet, RightCameraWritesIntoItsOwnFolders) {
+  const auto g = test::synthetic_gbuffer();
+  const auto set = encode_capture_set(g, {}, default_ontology(), OutputSelection::from_names({"semantic", "instance"}), 5, true);
+  std::vector<std::string> names;
+  for (const auto& f : set) names.push_back(f.relative_path);
+  EXPECT_EQ(names, (std::vector<std::string>{"semantic_right/000005.png", "instance_right/000005.png",
+                                             "instance_right/000005.json"}));
+}
+
+TEST(CaptureSet, FrameFileNamesListEveryFileOfAFrame) {
+  const OutputSelection sel = OutputSelection::from_names({"rgb", "depth_exr", "lidar"});
+  EXPECT_EQ(frame_file_names(sel, 2, false),
+            (std::vector<std::string>{"rgb/000002.png", "depth_exr/000002.exr", "lidar/000002.bin",
+                                      "lidar_labels/000002.label", "lidar_labels/000002.json"}));
+  EXPECT_EQ(frame_file_names(OutputSelection::from_names({"rgb"}), 2, true),
+            (std::vector<std::string>{"rgb/000002.png", "rgb_right/000002.png", "camera_right/000002.json",
+                                      "disparity/000002.png"}));
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ TEST(ConfigPrint, JsonIsNestedBySection) {
   EXPECT_EQ(json["camera"]["near"], 0.1);
   EXPECT_EQ(json["render"]["lod"], false);
   EXPECT_EQ(json["captures"]["sequences"], nlohmann::json::array({"random"}));
-  EXPECT_EQ(json.size(), 12u);  // seed + 11 sections
+  EXPECT_EQ(json.size(), 13u);  // seed + 12 sections
 }
 
 TEST(ConfigPrint, QuotesStrings) {

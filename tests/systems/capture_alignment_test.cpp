@@ -50,7 +50,7 @@ TEST(CaptureAlignment, ClassInstanceAndDepthEdgesCoincide) {
   io::OutputSelection outputs;
   for (io::OutputType t : {io::OutputType::Semantic, io::OutputType::Instance, io::OutputType::Depth})
     outputs.enabled[size_t(t)] = true;
-  auto images = decode(io::encode_capture_set(systems::label_planes(g), {}, default_ontology(), outputs, 0));
+  auto images = decode(io::encode_capture_set(systems::label_planes(g), {}, default_ontology(), outputs, 0, false));
   const cv::Mat& semantic = images.at("semantic");
   const cv::Mat& instance = images.at("instance");
   const cv::Mat& depth = images.at("depth");

@@ -50,10 +50,11 @@ std::string shard_record_name(const Shard& s) {
 }
 
 /// True when every file of frame `f` is in `run_dir`: its camera file (written last) and each selected output's.
-bool frame_complete(const world::PlannedFrame& f, const io::OutputSelection& outputs, const fs::path& run_dir) {
+bool frame_complete(const world::PlannedFrame& f, const io::OutputSelection& outputs, bool stereo,
+                    const fs::path& run_dir) {
   std::error_code ec;
   if (!fs::is_regular_file(run_dir / systems::camera_file(f), ec)) return false;
-  for (const std::string& file : io::frame_file_names(outputs, f.frame))
+  for (const std::string& file : io::frame_file_names(outputs, f.frame, stereo))
     if (!fs::is_regular_file(run_dir / f.sequence / file, ec)) return false;
   return true;
 }
@@ -66,7 +67,7 @@ std::vector<world::PlannedFrame> frames_to_capture(const std::vector<world::Plan
   std::vector<world::PlannedFrame> frames;
   for (const auto& f : plan) {
     if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
-    if (frame_complete(f, outputs, run_dir)) {
+    if (frame_complete(f, outputs, request.config.config.rig.stereo_baseline_m() > 0, run_dir)) {
       ++skipped;
       continue;
     }
@@ -92,8 +93,8 @@ void write_lidar_sequence_files(const std::vector<world::PlannedFrame>& plan, co
 }
 
 /// Writes the trajectory sequence's IMU readings (imu.csv), their noise (imu.yaml), the true state at each reading
-/// (state_groundtruth.csv, EuRoC) and its camera poses (groundtruth.txt, TUM) into <run_dir>/trajectory/ when the
-/// plan has that sequence.
+/// (state_groundtruth.csv, EuRoC) and its camera poses (groundtruth.txt, TUM; groundtruth_kitti.txt, KITTI odometry)
+/// into <run_dir>/trajectory/ when the plan has that sequence.
 void write_trajectory_files(const world::WorldContext& ctx, const std::vector<world::PlannedFrame>& plan,
                             const fs::path& run_dir) {
   std::vector<double> times;
@@ -114,6 +115,7 @@ void write_trajectory_files(const world::WorldContext& ctx, const std::vector<wo
   io::write_file_atomic(dir / "state_groundtruth.csv", io::euroc_state_csv(world::imu_states(walk, tc.imu_hz, imu)));
   io::write_file_atomic(dir / "imu.yaml", io::kalibr_imu_yaml(noise, tc.imu_hz));
   io::write_file_atomic(dir / "groundtruth.txt", io::tum_trajectory(times, poses));
+  io::write_file_atomic(dir / "groundtruth_kitti.txt", io::kitti_poses(poses));
 }
 
 /// Writes the finished run's output.formats into <run_dir>/export/ (as silva export).
@@ -193,7 +195,7 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
 
   Progress progress(reporter, int(frames.size()), "frames");
   const systems::CaptureStats stats =
-      schedule.capture(frames, {setup.lighting, setup.ontology, outputs, run_dir, setup.lidar},
+      schedule.capture(frames, {setup.lighting, setup.ontology, outputs, run_dir, setup.lidar, cfg.rig.stereo_baseline_m()},
                        [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
   progress.finish();
 

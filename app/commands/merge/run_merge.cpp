@@ -54,10 +54,12 @@ int merge_shards(const MergeRequest& request, const Reporter& reporter) {
       throw InputError(dir.string() + ": shard " + std::to_string(i) + " was made with a different config than shard 0");
   const io::OutputSelection outputs =
       io::OutputSelection::from_names(manifest.at("config").at("output").at("types").get<std::vector<std::string>>());
+  const nlohmann::json& config = manifest.at("config");
+  const bool stereo = config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
   int frames = 0;
   for (const auto& [sequence, n] : manifest.at("frames").items())
     for (int f = 0; f < n.get<int>(); ++f, ++frames) {
-      std::vector<std::string> files = io::frame_file_names(outputs, f);
+      std::vector<std::string> files = io::frame_file_names(outputs, f, stereo);
       files.push_back(io::frame_file("camera", f, "json"));
       for (const std::string& file : files)
         if (!fs::is_regular_file(dir / sequence / file))
