@@ -135,6 +135,7 @@ struct TrajectoryConfig {
   double step_hz = 1.8;             ///< trajectory.step_hz (steps per second: the bob's frequency; sway at half)
   std::string imu_noise = "adis16448";  ///< trajectory.imu_noise: "adis16448" (EuRoC's IMU) or "none"
   bool flow = false;                ///< trajectory.flow: optical flow between consecutive frames
+  std::string file;                 ///< trajectory.file: a TUM trajectory the walk follows ("" = the trail)
 };
 
 /// [rig]: the cameras each capture renders.

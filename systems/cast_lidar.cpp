@@ -108,7 +108,7 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         pose.position = sensor.block<3, 1>(0, 3);
         pose.seed = uint64_t(config.seed);
         pose.key = render::noise_key(work.frame.sequence, uint64_t(work.frame.frame));
-        if (config.lidar.motion_distortion && work.frame.trail_s) {
+        if (config.lidar.motion_distortion && (work.frame.trail_s || work.frame.walk)) {
           const Mat4d end =
               world::sweep_end_pose(ctx, work.frame, settings.lidar.rotation_hz) * lidar_to_camera(config.lidar);
           pose.end = raycast::SweepEnd{end.block<3, 3>(0, 0), end.block<3, 1>(0, 3)};

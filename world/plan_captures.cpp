@@ -205,7 +205,7 @@ std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector
 std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
   const auto walk = std::make_shared<const Trajectory>(ctx);
   const TrajectoryConfig& tc = ctx.config.trajectory;
-  const auto n = std::max<int64_t>(1, std::llround(tc.duration_s * tc.camera_hz));
+  const auto n = std::max<int64_t>(1, std::llround(walk->duration() * tc.camera_hz));
   std::vector<PlannedFrame> frames;
   frames.reserve(size_t(n));
   for (int64_t i = 0; i < n; ++i) {
@@ -248,8 +248,8 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
     } else if (sequence == "custom") {
       frames = plan_custom(ctx, custom_poses);
     } else if (sequence == "trajectory") {
-      if (!ctx.trail.enabled) {
-        warn("trajectory skipped: it walks along the trail and trail.enabled = false");
+      if (!ctx.trail.enabled && ctx.walk_poses.empty()) {
+        warn("trajectory skipped: it walks along the trail (no trajectory.file) and trail.enabled = false");
         continue;
       }
       frames = plan_trajectory(ctx);

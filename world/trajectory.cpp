@@ -55,6 +55,43 @@ CubicBSpline walk_curve(const WorldContext& ctx) {
   return {std::move(control), kTrajectoryKnotStep};
 }
 
+/// The pose of `poses` at time t: position linear and rotation spherical between neighbours; before the first
+/// pose and after the last, the position continues at the end segment's velocity and the rotation stays.
+std::pair<Vec3d, Mat3d> pose_at(const std::vector<TimedPose>& poses, double t) {
+  const auto next = std::upper_bound(poses.begin() + 1, poses.end() - 1, t,
+                                     [](double x, const TimedPose& p) { return x < p.t; });
+  const TimedPose& a = *(next - 1);
+  const TimedPose& b = *next;
+  const double w = (t - a.t) / (b.t - a.t);
+  const Vec3d position = a.position + w * (b.position - a.position);
+  const Eigen::Quaterniond q = Eigen::Quaterniond(a.rotation).slerp(std::clamp(w, 0.0, 1.0), Eigen::Quaterniond(b.rotation));
+  return {position, q.toRotationMatrix()};
+}
+
+/// Control points every kTrajectoryKnotStep seconds through a file's poses: x, y, z, yaw and pitch, roll, 0, 0
+/// (degrees; yaw and roll unwrapped).
+std::pair<CubicBSpline, CubicBSpline> file_curves(const std::vector<TimedPose>& poses) {
+  const double span = poses.back().t - poses.front().t;
+  const size_t n = size_t(std::ceil(span / kTrajectoryKnotStep)) + 4;
+  std::vector<Eigen::Vector4d> path, attitude;
+  for (size_t i = 0; i < n; ++i) {
+    const auto [p, r] = pose_at(poses, poses.front().t + (double(i) - 1.0) * kTrajectoryKnotStep);
+    Vec3d angles = angles_from_rotation(r);
+    if (i > 0) {
+      angles.x() = path.back()[3] + std::remainder(angles.x() - path.back()[3], 360.0);
+      angles.z() = attitude.back()[1] + std::remainder(angles.z() - attitude.back()[1], 360.0);
+    }
+    path.emplace_back(p.x(), p.y(), p.z(), angles.x());
+    attitude.emplace_back(angles.y(), angles.z(), 0.0, 0.0);
+  }
+  return {CubicBSpline(std::move(path), kTrajectoryKnotStep), CubicBSpline(std::move(attitude), kTrajectoryKnotStep)};
+}
+
+/// The walk's position and yaw curve: through ctx.walk_poses, else along the trail.
+CubicBSpline path_curve(const WorldContext& ctx) {
+  return ctx.walk_poses.empty() ? walk_curve(ctx) : file_curves(ctx.walk_poses).first;
+}
+
 }  // namespace
 
 std::pair<double, double> camera_height_and_pitch(const Config& c) {
@@ -63,35 +100,53 @@ std::pair<double, double> camera_height_and_pitch(const Config& c) {
 }
 
 Trajectory::Trajectory(const WorldContext& ctx)
-    : duration_(ctx.config.trajectory.duration_s),
+    : duration_(ctx.walk_poses.empty() ? ctx.config.trajectory.duration_s
+                                       : ctx.walk_poses.back().t - ctx.walk_poses.front().t),
       start_m_(ctx.config.trajectory.start_m),
       speed_(ctx.config.trajectory.speed),
       pitch_deg_(camera_height_and_pitch(ctx.config).second),
       bob_m_(ctx.config.trajectory.bob_m),
       sway_deg_(ctx.config.trajectory.sway_deg),
       step_hz_(ctx.config.trajectory.step_hz),
-      curve_(walk_curve(ctx)) {}
+      curve_(path_curve(ctx)) {
+  if (!ctx.walk_poses.empty()) attitude_ = file_curves(ctx.walk_poses).second;
+}
 
 RigState Trajectory::at(double t) const {
   const CubicBSpline::Sample c = curve_.at(t);
   const double w = 2.0 * kPi * step_hz_;  // the bob's angular frequency; the sway's is half
   RigState s;
   s.t = t;
-  s.position = Vec3d(c.value[0], c.value[1], c.value[2] + bob_m_ * std::sin(w * t));
-  s.velocity = Vec3d(c.rate[0], c.rate[1], c.rate[2] + bob_m_ * w * std::cos(w * t));
-  s.acceleration = Vec3d(c.acceleration[0], c.acceleration[1], c.acceleration[2] - bob_m_ * w * w * std::sin(w * t));
+  double pitch_rate = 0, roll_rate = 0;  // degrees per second
+  if (attitude_) {
+    const CubicBSpline::Sample a = attitude_->at(t);
+    s.position = c.value.head<3>();
+    s.velocity = c.rate.head<3>();
+    s.acceleration = c.acceleration.head<3>();
+    s.pitch_deg = a.value[0];
+    s.roll_deg = a.value[1];
+    pitch_rate = a.rate[0];
+    roll_rate = a.rate[1];
+  } else {
+    s.position = Vec3d(c.value[0], c.value[1], c.value[2] + bob_m_ * std::sin(w * t));
+    s.velocity = Vec3d(c.rate[0], c.rate[1], c.rate[2] + bob_m_ * w * std::cos(w * t));
+    s.acceleration = Vec3d(c.acceleration[0], c.acceleration[1], c.acceleration[2] - bob_m_ * w * w * std::sin(w * t));
+    s.pitch_deg = pitch_deg_;
+    s.roll_deg = sway_deg_ * std::sin(0.5 * w * t);
+    roll_rate = sway_deg_ * 0.5 * w * std::cos(0.5 * w * t);
+    s.trail_s = start_m_ + speed_ * t;
+  }
   s.yaw_deg = c.value[3];
-  s.pitch_deg = pitch_deg_;
-  s.roll_deg = sway_deg_ * std::sin(0.5 * w * t);
-  const double yaw_rate = c.rate[3], roll_rate = sway_deg_ * 0.5 * w * std::cos(0.5 * w * t);  // degrees per second
+  const double yaw_rate = c.rate[3];
   s.rotation = rotation_from_angles(s.yaw_deg, s.pitch_deg, s.roll_deg);
-  // R = Rz(yaw) Ry(-pitch) Rx(roll) B turns at yaw' about the world's Z and at roll' about the axis Rz Ry X.
+  // R = Rz(yaw) Ry(-pitch) Rx(roll) B turns at yaw' about the world's Z, at -pitch' about Rz Y and at roll' about
+  // the axis Rz Ry X.
   const double to_rad = kPi / 180.0;
-  const Mat3d yaw_pitch = (Eigen::AngleAxisd(s.yaw_deg * to_rad, Vec3d::UnitZ()) *
-                           Eigen::AngleAxisd(-s.pitch_deg * to_rad, Vec3d::UnitY())).toRotationMatrix();
-  const Vec3d omega_world = to_rad * (yaw_rate * Vec3d::UnitZ() + roll_rate * (yaw_pitch * Vec3d::UnitX()));
+  const Eigen::AngleAxisd yaw(s.yaw_deg * to_rad, Vec3d::UnitZ());
+  const Mat3d yaw_pitch = (yaw * Eigen::AngleAxisd(-s.pitch_deg * to_rad, Vec3d::UnitY())).toRotationMatrix();
+  Vec3d omega_world = to_rad * (yaw_rate * Vec3d::UnitZ() + roll_rate * (yaw_pitch * Vec3d::UnitX()));
+  if (attitude_) omega_world -= to_rad * pitch_rate * (yaw * Vec3d::UnitY());
   s.angular_velocity = s.rotation.transpose() * omega_world;
-  s.trail_s = start_m_ + speed_ * t;
   return s;
 }
 

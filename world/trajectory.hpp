@@ -2,6 +2,7 @@
 /// @file The continuous walk of the `trajectory` sequence (CONTRACT.md "Capture sequences"): a camera
 /// carried along the trail at trajectory.speed, its path and heading smoothed into C2 curves of time,
 /// with a walking bob and sway, so that velocity, acceleration and angular velocity are exact.
+#include <optional>
 #include <utility>
 
 #include "core/types.hpp"
@@ -28,7 +29,7 @@ struct RigState {
   Mat3d rotation;                      ///< camera_to_world rotation (CONTRACT.md camera axes).
   Vec3d angular_velocity;              ///< In the camera's axes, rad/s.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< The pose angles (CONTRACT.md convention).
-  double trail_s = 0;                  ///< Nominal arc length along the trail, metres.
+  std::optional<double> trail_s;       ///< Nominal arc length along the trail, metres (none: a walk from trajectory.file).
   /// camera_to_world of this state.
   Mat4d pose() const {
     Mat4d m = Mat4d::Identity();
@@ -38,20 +39,24 @@ struct RigState {
   }
 };
 
-/// The walk of a world's trajectory sequence, from trajectory.start_m along the trail.
+/// The walk of a world's trajectory sequence: from trajectory.start_m along the trail, or through the poses of
+/// trajectory.file (ctx.walk_poses).
 class Trajectory {
  public:
-  /// The walk of `ctx` (trajectory.* keys, camera.ground_height or the aerial height and pitch). InputError
-  /// naming the keys when it would run past the end of the trail; needs ctx.trail.enabled.
+  /// The walk of `ctx`: through ctx.walk_poses when it has any (smoothed into C2 curves with control points
+  /// kTrajectoryKnotStep apart; no bob or sway added), else along the trail (trajectory.* keys,
+  /// camera.ground_height or the aerial height and pitch; InputError naming the keys when it would run past the
+  /// end of the trail; needs ctx.trail.enabled).
   explicit Trajectory(const WorldContext& ctx);
   /// The state at time t (0 ... duration()).
   RigState at(double t) const;
-  /// trajectory.duration_s.
+  /// trajectory.duration_s, or the span of trajectory.file's times.
   double duration() const { return duration_; }
 
  private:
   double duration_, start_m_, speed_, pitch_deg_, bob_m_, sway_deg_, step_hz_;
   CubicBSpline curve_;  ///< x, y, z (without the bob), yaw in degrees (unwrapped).
+  std::optional<CubicBSpline> attitude_;  ///< Pitch and roll in degrees of a walk from a file (none: on the trail).
 };
 
 }  // namespace silva::world

@@ -6,6 +6,7 @@
 
 #include "assets/library.hpp"
 #include "core/config.hpp"
+#include "core/timed_pose.hpp"
 #include "world/species_stands.hpp"
 #include "world/terrain.hpp"
 #include "world/trail.hpp"
@@ -25,6 +26,7 @@ struct WorldContext {
   std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
   float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.
   int neighbour_ring = 1;                      ///< Chunks on each side whose candidates can touch a chunk's.
+  std::vector<TimedPose> walk_poses;           ///< trajectory.file's poses (empty: the walk follows the trail).
   /// Chunk edge length (terrain.chunk_size), metres.
   double chunk_size() const { return config.terrain.chunk_size; }
 };

@@ -114,7 +114,7 @@ void check_config(const LoadedConfig& loaded) {
                              "random, custom, trajectory)");
   }
   const bool autopilot = contains(sequences, "autopilot") && c.trail.enabled;
-  const bool trajectory = contains(sequences, "trajectory") && c.trail.enabled;
+  const bool trajectory = contains(sequences, "trajectory") && (c.trail.enabled || !c.trajectory.file.empty());
   if (!autopilot && !trajectory && !contains(sequences, "random") && !contains(sequences, "custom")) {
     throw InputError(where + ": the autopilot and trajectory sequences need trail.enabled = true, and no other "
                              "sequence is left in captures.sequences");

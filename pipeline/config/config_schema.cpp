@@ -207,6 +207,9 @@ std::vector<ConfigKey> build_schema() {
       {"trajectory.flow", T::Bool,
        "write the exact optical flow between consecutive trajectory frames (needs output type depth or depth_exr)", {},
        {}, [](Config& c) -> FieldRef { return &c.trajectory.flow; }},
+      {"trajectory.file", T::String,
+       "TUM trajectory file (t x y z qx qy qz qw per line) the walk follows instead of the trail (\"\" = the trail)",
+       {}, {}, [](Config& c) -> FieldRef { return &c.trajectory.file; }},
       {"rig.preset", T::String,
        "cameras of each capture: mono (one) or stereo (a rectified pair, right camera rig.baseline_m along the "
        "left's x; the left is the mono camera)", {}, {"mono", "stereo"},

@@ -8,6 +8,7 @@
 
 #include "pipeline/config/config_print.hpp"
 #include "pipeline/config/data_path.hpp"
+#include "io/tum_trajectory_file.hpp"
 #include "pipeline/config/lidar_config.hpp"
 #include "pipeline/config/lighting_config.hpp"
 #include "assets/load_library.hpp"
@@ -92,6 +93,13 @@ void load_run_files(const LoadedConfig& loaded, RunSetup& setup) {
   setup.lidar = selected_lidar_preset(loaded, setup.lidar_toml);
 }
 
+std::vector<TimedPose> trajectory_file_poses(const Config& config) {
+  const auto& sequences = config.captures.sequences;
+  if (config.trajectory.file.empty() || std::find(sequences.begin(), sequences.end(), "trajectory") == sequences.end())
+    return {};
+  return io::read_tum_trajectory(config.trajectory.file);
+}
+
 RunSetup make_run_setup(const LoadedConfig& loaded) {
   RunSetup setup;
   load_run_files(loaded, setup);
@@ -100,6 +108,7 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
   setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));
   setup.world = world::make_world_context(loaded.config, *setup.library);
+  setup.world.walk_poses = trajectory_file_poses(loaded.config);
   return setup;
 }
 
@@ -121,6 +130,7 @@ std::string run_identity_hash(const LoadedConfig& loaded, const RunSetup& setup)
   const CapturesConfig& captures = loaded.config.captures;
   if (std::find(captures.sequences.begin(), captures.sequences.end(), "custom") != captures.sequences.end())
     text += "\nposes_file " + io::sha256_file(captures.poses_file);
+  if (!setup.world.walk_poses.empty()) text += "\ntrajectory_file " + io::sha256_file(loaded.config.trajectory.file);
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(XXH64(text.data(), text.size(), 0)));
   return buf;

@@ -27,6 +27,10 @@ struct RunSetup {
   std::filesystem::path lidar_toml;               ///< The LiDAR presets file used.
 };
 
+/// The poses of trajectory.file when the run has the trajectory sequence and the key is set, else none;
+/// InputError naming the file and line when it is not a valid TUM trajectory (io/tum_trajectory_file.hpp).
+std::vector<TimedPose> trajectory_file_poses(const Config& config);
+
 /// The asset library manifest: $SILVA_ASSETS/library.json when set, else the one built with
 /// the binary (SILVA_ASSET_DIR). Throws InputError naming the path when it is missing.
 std::filesystem::path asset_library_path();

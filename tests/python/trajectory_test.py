@@ -205,7 +205,31 @@ def main():
     refused = silva("export", os.path.join(plain, f"{3:010d}"), "--format", "euroc", "--out", os.path.join(WORK, "x"),
                     expect=2)
     assert "needs the trajectory sequence" in refused.stderr, refused.stderr
+    check_file_walk(two)
     print("trajectory: 20 frames, 400 IMU readings; integration error", f"{max(errors):.4f} m")
+
+
+def check_file_walk(walked):
+    """A walk through the poses of trajectory.file (here the first walk's groundtruth.txt, in a world without a
+    trail) follows them within the smoothing of its 0.25 s control points; a file whose times go back is refused."""
+    truth = os.path.join(walked, "trajectory", "groundtruth.txt")
+    out = os.path.join(WORK, "file-walk")
+    silva("generate", "--seed", str(SEED), "--out", out, "--quiet", "--set", "output.resolution=32x24",
+          "--set", 'captures.sequences=["trajectory"]', "--set", "trail.enabled=false",
+          "--set", f"trajectory.file={truth}", "--set", 'output.types=["depth"]')
+    a = np.loadtxt(truth)
+    b = np.loadtxt(os.path.join(out, f"{SEED:010d}", "trajectory", "groundtruth.txt"))
+    assert len(b) == 19, len(b)  # frames every 0.1 s while t < the file's span of 1.9 s
+    assert np.allclose(b[:, 0], a[:19, 0])
+    error = np.linalg.norm(a[:19, 1:4] - b[:, 1:4], axis=1).max()
+    assert error < 0.03, f"the file walk strays {error} m from its poses"  # the 1.8 Hz bob, smoothed
+    bad = os.path.join(WORK, "backwards.txt")
+    with open(bad, "w") as f:
+        f.write("0 0 0 1 0 0 0 1\n1 0 0 1 0 0 0 1\n0.5 0 0 1 0 0 0 1\n")
+    refused = silva("generate", "--seed", "1", "--out", os.path.join(WORK, "never"), "--quiet",
+                    "--set", 'captures.sequences=["trajectory"]', "--set", f"trajectory.file={bad}", expect=2)
+    assert "line 3" in refused.stderr and "strictly increase" in refused.stderr, refused.stderr
+    assert not os.path.exists(os.path.join(WORK, "never")), "a refused run wrote its folder"
 
 
 main()

@@ -40,6 +40,8 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
     manifest["sensors"]["lidar"] = lidar_description(loaded, setup);
   if (frames_per_sequence.count("custom"))
     manifest["sha256"]["poses_file"] = io::sha256_file(loaded.config.captures.poses_file);
+  if (!setup.world.walk_poses.empty())
+    manifest["sha256"]["trajectory_file"] = io::sha256_file(loaded.config.trajectory.file);
   return manifest;
 }
 

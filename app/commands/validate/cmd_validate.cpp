@@ -26,6 +26,7 @@ int validate(const ValidateArgs& args) {
   const CapturesConfig& captures = loaded.config.captures;
   if (std::find(captures.sequences.begin(), captures.sequences.end(), "custom") != captures.sequences.end())
     io::read_pose_file(captures.poses_file);  // the pose file is part of what generate would read
+  trajectory_file_poses(loaded.config);     // and so is the trajectory file
   RunSetup files;  // the ontology, lighting and LiDAR presets generate would read
   load_run_files(loaded, files);
   resolve_seed(loaded);
