@@ -160,12 +160,12 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
   return m;
 }
 
-cv::Mat Dataset::depth_metres(const DatasetFrame& f) const {
+cv::Mat Dataset::depth_metres(const DatasetFrame& f, bool right) const {
   cv::Mat m;
   if (has("depth_exr")) {
-    m = read_depth_exr(file(f, "depth_exr", "exr"), cv::Mat(height, width, CV_8UC1));
+    m = read_depth_exr(file(f, camera_folder("depth_exr", right), "exr"), cv::Mat(height, width, CV_8UC1));
   } else {
-    image(f, "depth", CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
+    image(f, camera_folder("depth", right), CV_16UC1).convertTo(m, CV_32FC1, 1.0 / 1000.0);
   }
   m.setTo(std::numeric_limits<float>::infinity(), m == 0.0f);
   return m;

@@ -46,9 +46,10 @@ struct Dataset {
   /// the run's resolution; for "semantic", every pixel must hold a class id of the ontology. InputError naming the
   /// file otherwise.
   cv::Mat image(const DatasetFrame& f, const std::string& folder, int type) const;
-  /// Frame `f`'s depth in metres along the optical axis (CV_32FC1): depth_exr when the run wrote it, else the depth
-  /// PNG / 1000; +inf where nothing was hit. InputError naming the file when it is missing or not the frame's size.
-  cv::Mat depth_metres(const DatasetFrame& f) const;
+  /// Frame `f`'s depth in metres along the optical axis (CV_32FC1) of its left (or only) camera, or with `right` of
+  /// a stereo rig's right camera: depth_exr when the run wrote it, else the depth PNG / 1000; +inf where nothing was
+  /// hit. InputError naming the file when it is missing or not the frame's size.
+  cv::Mat depth_metres(const DatasetFrame& f, bool right) const;
   /// Frame `f`'s LiDAR labels (lidar_labels/NNNNNN.label): one per point of its scan (lidar/NNNNNN.bin), each class id
   /// one of the ontology's. InputError naming the file otherwise.
   std::vector<uint32_t> lidar_labels(const DatasetFrame& f) const;

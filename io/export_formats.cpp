@@ -13,7 +13,8 @@ namespace silva::io {
 
 const std::vector<std::string>& export_format_names() {
   static const std::vector<std::string> names = {"coco-panoptic", "coco-instances", "cityscapes", "colmap",
-                                                 "nerfstudio", "semantickitti", "rosbag2", "euroc"};
+                                                 "nerfstudio", "semantickitti", "rosbag2", "euroc",
+                                                 "tartanair"};
   return names;
 }
 
@@ -77,6 +78,7 @@ void export_dataset(const Dataset& dataset, ExportFormat format, const std::file
     case ExportFormat::SemanticKitti: return export_semantickitti(dataset, out, options);
     case ExportFormat::Rosbag2: return export_rosbag2(dataset, out, options);
     case ExportFormat::Euroc: return export_euroc(dataset, out, options);
+    case ExportFormat::Tartanair: return export_tartanair(dataset, out, options);
   }
 }
 

@@ -15,10 +15,10 @@
 namespace silva::io {
 
 /// An export format.
-enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti, Rosbag2, Euroc };
+enum class ExportFormat { CocoPanoptic, CocoInstances, Cityscapes, Colmap, Nerfstudio, SemanticKitti, Rosbag2, Euroc, Tartanair };
 
 /// Every format's name, in ExportFormat order: coco-panoptic, coco-instances, cityscapes, colmap, nerfstudio,
-/// semantickitti, rosbag2, euroc.
+/// semantickitti, rosbag2, euroc, tartanair.
 const std::vector<std::string>& export_format_names();
 
 /// The name of `format`.
@@ -82,6 +82,9 @@ void export_colmap(const Dataset& dataset, const std::filesystem::path& out, con
 void export_nerfstudio(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// EuRoC / ASL (visual-inertial odometry): the trajectory sequence as mav0/{cam0,imu0,state_groundtruth_estimate0}/.
 void export_euroc(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
+/// TartanAir-like (visual odometry, stereo, flow): per sequence image_left/, depth_left/ and seg_left/ (NumPy), the
+/// right camera's for a stereo rig, flow/ from the forward flow, and pose_left.txt in NED frames.
+void export_tartanair(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);
 /// SemanticKITTI (LiDAR): sequences/NN/{velodyne,labels,image_2}/, calib.txt, poses.txt, times.txt and
 /// semantic-kitti.yaml, the label map.
 void export_semantickitti(const Dataset& dataset, const std::filesystem::path& out, const ExportOptions& options);

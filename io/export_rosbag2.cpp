@@ -238,7 +238,7 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
       put("/camera/image_raw", t, encode_image(at_camera, w, h, "rgb8", 3 * w, pixels(image)));
     }
     if (depth) {
-      const cv::Mat m = d.depth_metres(f);
+      const cv::Mat m = d.depth_metres(f, false);
       if (m.cols != int(w) || m.rows != int(h))
         throw InputError(d.file(f, d.has("depth_exr") ? "depth_exr" : "depth", d.has("depth_exr") ? "exr" : "png").string() +
                          ": not the size its camera file gives");

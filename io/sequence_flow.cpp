@@ -30,7 +30,7 @@ void write_flow(const Dataset& d, const DatasetFrame& from, const FlowField& flo
 void write_pair(const Dataset& d, const DatasetFrame& a, const DatasetFrame& b) {
   const Camera camera_a = read_camera_json(d.file(a, "camera", "json")).camera;
   const Camera camera_b = read_camera_json(d.file(b, "camera", "json")).camera;
-  const cv::Mat depth_a = d.depth_metres(a), depth_b = d.depth_metres(b);
+  const cv::Mat depth_a = d.depth_metres(a, false), depth_b = d.depth_metres(b, false);
   write_flow(d, a, optical_flow(camera_a, depth_a, camera_b, depth_b), kForwardFlow);
   write_flow(d, b, optical_flow(camera_b, depth_b, camera_a, depth_a), kBackwardFlow);
 }

@@ -21,7 +21,8 @@ std::vector<ConfigKey> build_schema() {
       "rgb", "semantic", "semantic_color", "instance", "depth", "depth_exr", "normal",
       "depth_preview", "lidar"};
   const std::vector<std::string_view> export_formats = {"coco-panoptic", "coco-instances", "cityscapes",
-                                                        "colmap", "nerfstudio", "semantickitti", "rosbag2", "euroc"};
+                                                        "colmap", "nerfstudio", "semantickitti", "rosbag2", "euroc",
+                                                        "tartanair"};
   const std::vector<std::string_view> sequences = {"autopilot", "random", "custom", "trajectory"};
   using T = ValueType;
   return {

@@ -101,6 +101,43 @@ def check_euroc(stereo):
                                                                               "000000.png"), shallow=False)
 
 
+def quaternion_matrix(x, y, z, w):
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+
+
+def check_tartanair(stereo):
+    """The tartanair export read back as TartanAir's tools read it: np.load, cv2.imread, NED poses."""
+    out = os.path.join(WORK, "tartanair-export")
+    silva("export", stereo, "--format", "tartanair", "--out", out)
+    seq, src = os.path.join(out, "tartanair", "trajectory"), os.path.join(stereo, "trajectory")
+    for side, suffix in (("left", ""), ("right", "_right")):
+        poses = np.loadtxt(os.path.join(seq, f"pose_{side}.txt"))
+        assert poses.shape == (4, 7), poses.shape
+        for i in range(4):
+            n = f"{i:06d}"
+            assert filecmp.cmp(os.path.join(seq, f"image_{side}", f"{n}_{side}.png"),
+                               os.path.join(src, "rgb" + suffix, n + ".png"), shallow=False)
+            depth = np.load(os.path.join(seq, f"depth_{side}", f"{n}_{side}_depth.npy"))
+            exr = cv2.imread(os.path.join(src, "depth_exr" + suffix, n + ".exr"), cv2.IMREAD_UNCHANGED)
+            assert depth.dtype == np.float32 and np.array_equal(depth, np.where(exr > 0, exr, 10000)), side
+            seg = np.load(os.path.join(seq, f"seg_{side}", f"{n}_{side}_seg.npy"))
+            sem = cv2.imread(os.path.join(src, "semantic" + suffix, n + ".png"), cv2.IMREAD_UNCHANGED)
+            assert seg.dtype == np.uint8 and np.array_equal(seg, sem), side
+            pose = np.array(json.load(open(os.path.join(src, "camera" + suffix, n + ".json")))["camera_to_world"])
+            ned = np.diag([1.0, -1.0, -1.0])
+            assert np.allclose(poses[i, :3], ned @ pose[:3, 3], atol=1e-6)
+            body = quaternion_matrix(*poses[i, 3:])  # TartanAir's body: x forward, y right, z down
+            assert np.allclose(body[:, 0], ned @ pose[:3, 2], atol=1e-6) and np.allclose(body[:, 1], ned @ pose[:3, 0],
+                                                                                         atol=1e-6)
+    flow = np.load(os.path.join(seq, "flow", "000000_000001_flow.npy"))
+    mask = np.load(os.path.join(seq, "flow", "000000_000001_mask.npy"))
+    flo = np.fromfile(os.path.join(src, "flow_forward_flo", "000000.flo"), dtype="<f4")[3:].reshape(240, 320, 2)
+    assert flow.shape == (240, 320, 2) and np.array_equal(flow, flo) and mask.shape == (240, 320)
+    assert not os.path.exists(os.path.join(seq, "flow", "000003_000004_flow.npy")), "flow past the last frame"
+
+
 def check_kitti_groundtruth(seq):
     rows = np.loadtxt(os.path.join(seq, "groundtruth_kitti.txt")).reshape(-1, 3, 4)
     first = np.array(json.load(open(os.path.join(seq, "camera", "000000.json")))["camera_to_world"])
@@ -123,13 +160,21 @@ def check_resume(stereo):
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     mono = generate("mono")
-    stereo = generate("stereo", "--set", "rig.preset=stereo", "--set", f"rig.baseline_m={BASELINE}")
+    stereo = generate("stereo", "--set", "rig.preset=stereo", "--set", f"rig.baseline_m={BASELINE}",
+                      "--set", "trajectory.flow=true")
     check_left_equals_mono(mono, stereo)
+    cameras = json.load(open(os.path.join(stereo, "manifest.json")))["sensors"]["cameras"]
+    assert [c["name"] for c in cameras] == ["left", "right"], cameras
+    assert np.allclose(cameras[1]["camera_to_rig"], [[1, 0, 0, BASELINE], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+    rig = json.load(open(os.path.join(stereo, "card.json")))["rig"]
+    assert rig == {"preset": "stereo", "baseline_m": BASELINE, "imu_hz": 200.0, "imu_noise": "adis16448"}, rig
+    assert "stereo pair, baseline 0.12 m" in open(os.path.join(stereo, "CARD.md")).read()
     seq = os.path.join(stereo, "trajectory")
     names = [n[:-5] for n in sorted(os.listdir(os.path.join(seq, "camera")))]
     assert len(names) == 4, names
     agreement = [check_frame(seq, n) for n in names]
     check_euroc(stereo)
+    check_tartanair(stereo)
     check_kitti_groundtruth(seq)
     check_resume(stereo)
     print(f"stereo ok: {len(names)} frames, label agreement through the disparity {min(agreement):.4f}")

@@ -17,6 +17,7 @@
 #include "io/export_formats.hpp"
 #include "io/json_read.hpp"
 #include "io/png_writer.hpp"
+#include "io/printf_string.hpp"
 #include "io/run_folder.hpp"
 #include "app/cli/pipeline_names.hpp"
 
@@ -57,6 +58,19 @@ std::string percent(double share) {
 }
 
 /// The class table: one row per class id that a role uses, in id order.
+/// card.json's "rig": the stereo baseline (null: one camera) and, with the trajectory sequence, the IMU's rate and
+/// noise model (else null), from the manifest's config.
+nlohmann::json rig_summary(const nlohmann::json& manifest) {
+  const nlohmann::json& config = manifest.at("config");
+  const nlohmann::json rig = config.value("rig", nlohmann::json::object());
+  const bool stereo = rig.value("preset", "mono") == "stereo";
+  const bool imu = manifest.at("frames").contains("trajectory") && config.contains("trajectory");
+  return {{"preset", rig.value("preset", "mono")},
+          {"baseline_m", stereo ? rig.at("baseline_m") : nlohmann::json()},
+          {"imu_hz", imu ? config.at("trajectory").at("imu_hz") : nlohmann::json()},
+          {"imu_noise", imu ? config.at("trajectory").at("imu_noise") : nlohmann::json()}};
+}
+
 nlohmann::json class_rows(const io::Dataset& d, const io::CardCounts& c) {
   nlohmann::json rows = nlohmann::json::array();
   for (int id = 0; id < 256; ++id) {
@@ -167,6 +181,7 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const Ca
              {{"unit", rellis3d_lidar_points().unit}, {"source", rellis3d_lidar_points().source},
               {"classes", published_rows(d, c, rellis3d_lidar_points())}}},
             {"rugd", nullptr}}},
+          {"rig", rig_summary(d.manifest)},
           {"conditions",
            {{"time_of_day", config.at("lighting").at("time_of_day")},
             {"weather", config.at("lighting").at("weather")},
@@ -214,6 +229,19 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
               io::pose_map_width(kMapSize, legend), kMapSize);
 }
 
+/// CARD.md's sentence on the rig: its cameras and, with the trajectory sequence, the IMU.
+std::string rig_sentence(const nlohmann::json& rig) {
+  std::string text = rig["baseline_m"].is_null()
+                         ? "Rig: one camera."
+                         : io::printf_string("Rig: a rectified stereo pair, baseline %.3g m (the right camera's outputs in "
+                                         "`<type>_right/`, the left camera's disparity in `disparity/`).",
+                                         rig["baseline_m"].get<double>());
+  if (!rig["imu_hz"].is_null())
+    text += io::printf_string(" The trajectory sequence carries an IMU at the left camera, %.4g Hz, noise `%s`.",
+                          rig["imu_hz"].get<double>(), rig["imu_noise"].get<std::string>().c_str());
+  return text + "\n\n";
+}
+
 /// CARD.md: the card's numbers in words, a table and the charts.
 std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, const io::CardCounts& c,
                           const CameraMap& map) {
@@ -240,8 +268,9 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
   md += "## Instance sizes\n\n![instances per size](card_instance_sizes.png)\n\n" + small_instances_note(c);
   md += "## Depth\n\n![depth histogram](card_depth.png)\n\n" + std::to_string(c.depth_no_hit) +
         " pixels hit nothing (sky or beyond camera.far); the last bin holds 64 m and farther.\n\n";
-  md += "## Cameras\n\n![camera positions](card_poses.png)\n\nTop down, world X to the right, Y up; a stroke "
-        "points along each view. ";
+  md += "## Cameras\n\n" + rig_sentence(card["rig"]) +
+        "![camera positions](card_poses.png)\n\nTop down, world X to the right, Y up; a stroke points along each "
+        "view. ";
   md += map.map ? "Under them the class map of the world within " + std::to_string(int(kMapMargin)) +
                       " m of the cameras (each object a disc of its crown or top in the colour of its class seen from "
                       "above, the trail and solid footprints on top; built again from the run's config). "

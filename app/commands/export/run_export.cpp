@@ -84,6 +84,9 @@ int run_export(const ExportRequest& request, const Reporter& reporter) {
       const auto format = io::ExportFormat(i);
       if (format == io::ExportFormat::SemanticKitti && !dataset.has("lidar")) continue;
       if (format == io::ExportFormat::Euroc && !dataset.has_sequence("trajectory")) continue;
+      if (format == io::ExportFormat::Tartanair &&
+          !(dataset.has("rgb") && dataset.has("semantic") && (dataset.has("depth") || dataset.has("depth_exr"))))
+        continue;
       if (std::find(formats.begin(), formats.end(), format) == formats.end()) formats.push_back(format);
     }
   check_export_location(request.run_dir, request.out_dir, formats);

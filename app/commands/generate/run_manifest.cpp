@@ -19,6 +19,40 @@ std::map<std::string, int> count_frames(const std::vector<world::PlannedFrame>& 
   return counts;
 }
 
+namespace {
+
+/// A 4x4 transform as 4 rows: the identity moved `x` metres along x.
+nlohmann::json translation_rows(double x) {
+  return {{1.0, 0.0, 0.0, x}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}, {0.0, 0.0, 0.0, 1.0}};
+}
+
+}  // namespace
+
+nlohmann::json camera_descriptions(const RigConfig& rig) {
+  const double baseline = rig.stereo_baseline_m();
+  nlohmann::json cameras = nlohmann::json::array();
+  cameras.push_back({{"name", baseline > 0 ? "left" : "camera"},
+                     {"folders", "<type>/"},
+                     {"camera_files", "camera/"},
+                     {"camera_to_rig", translation_rows(0.0)}});
+  if (baseline > 0) {
+    cameras[0]["disparity"] = "disparity/";
+    cameras.push_back({{"name", "right"},
+                       {"folders", "<type>_right/"},
+                       {"camera_files", "camera_right/"},
+                       {"camera_to_rig", translation_rows(baseline)}});
+  }
+  return cameras;
+}
+
+nlohmann::json imu_description(const TrajectoryConfig& trajectory) {
+  return {{"rate_hz", trajectory.imu_hz},
+          {"noise", trajectory.imu_noise},
+          {"imu_to_rig", translation_rows(0.0)},
+          {"frame", "the camera's: x right, y down, z forward"},
+          {"files", "trajectory/imu.csv, trajectory/imu.yaml"}};
+}
+
 nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
                              const std::map<std::string, int>& frames_per_sequence) {
   nlohmann::json config = config_to_json(loaded);
@@ -36,6 +70,8 @@ nlohmann::json make_manifest(const LoadedConfig& loaded, const RunSetup& setup,
         {"asset_library", io::sha256_file(setup.library_json)}}},
       {"frames", frames},
   };
+  manifest["sensors"]["cameras"] = camera_descriptions(loaded.config.rig);
+  if (frames_per_sequence.count("trajectory")) manifest["sensors"]["imu"] = imu_description(loaded.config.trajectory);
   if (io::OutputSelection::from_names(loaded.config.output.types).has(io::OutputType::Lidar))
     manifest["sensors"]["lidar"] = lidar_description(loaded, setup);
   if (frames_per_sequence.count("custom"))
