@@ -21,6 +21,7 @@ from silva_cli import runner
 SILVA, WORK = sys.argv[1], sys.argv[2]
 SEED = 5150
 BASELINE = 0.12
+VERIFY_FAILED = 4  # silva verify's exit code for labels that disagree with the ray caster (CONTRACT.md "Errors")
 TYPES = '["rgb","semantic","depth_exr"]'
 silva = runner(SILVA)
 
@@ -157,6 +158,20 @@ def check_resume(stereo):
     os.remove(kept)
 
 
+def check_verify(stereo):
+    """silva verify casts both cameras of each frame; a right semantic image with two classes swapped fails it."""
+    silva("verify", stereo, "--quiet")
+    cameras = [f["camera"] for f in json.load(open(os.path.join(stereo, "verify.json")))["frames"]]
+    assert cameras == ["left", "right"] * 4, cameras
+    path = os.path.join(stereo, "trajectory", "semantic_right", "000001.png")
+    sem = cv2.imread(path, cv2.IMREAD_UNCHANGED)
+    swapped = sem.copy()
+    ground, canopy = 1, 4  # the default ontology's ground and canopy classes
+    swapped[sem == ground], swapped[sem == canopy] = canopy, ground
+    cv2.imwrite(path, swapped)
+    silva("verify", stereo, "--quiet", expect=VERIFY_FAILED)
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     mono = generate("mono")
@@ -177,6 +192,7 @@ def main():
     check_tartanair(stereo)
     check_kitti_groundtruth(seq)
     check_resume(stereo)
+    check_verify(stereo)
     print(f"stereo ok: {len(names)} frames, label agreement through the disparity {min(agreement):.4f}")
 
 

@@ -17,6 +17,7 @@
 #include "core/rng.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
+#include "io/capture_set.hpp"
 #include "io/lidar_files.hpp"
 #include "io/run_folder.hpp"
 #include "io/sha256.hpp"
@@ -98,52 +99,55 @@ std::vector<uint32_t> sample_pixels(int width, int height, double sample, int64_
   return pixels;
 }
 
-/// The files a checked frame needs (InputError naming the first that is missing).
-void check_frame_files(const io::Dataset& d, const io::DatasetFrame& f) {
-  std::vector<fs::path> need = {d.file(f, "camera", "json"), d.file(f, "semantic", "png")};
-  need.push_back(d.has("depth_exr") ? d.file(f, "depth_exr", "exr") : d.file(f, "depth", "png"));
-  if (d.has("instance")) need.push_back(d.file(f, "instance", "png")), need.push_back(d.file(f, "instance", "json"));
-  if (d.has("normal")) need.push_back(d.file(f, "normal", "png"));
-  if (d.has("lidar")) need.push_back(d.file(f, "lidar", "bin")), need.push_back(d.file(f, "lidar_labels", "label"));
+/// The files a checked frame needs, of its left (or only) camera or with `right` of a stereo rig's right camera
+/// (InputError naming the first that is missing).
+void check_frame_files(const io::Dataset& d, const io::DatasetFrame& f, bool right) {
+  const auto file = [&](const char* folder, const char* ext) { return d.file(f, io::camera_folder(folder, right), ext); };
+  std::vector<fs::path> need = {file("camera", "json"), file("semantic", "png")};
+  need.push_back(d.has("depth_exr") ? file("depth_exr", "exr") : file("depth", "png"));
+  if (d.has("instance")) need.push_back(file("instance", "png")), need.push_back(file("instance", "json"));
+  if (d.has("normal")) need.push_back(file("normal", "png"));
+  if (d.has("lidar") && !right) need.push_back(file("lidar", "bin")), need.push_back(file("lidar_labels", "label"));
   std::error_code ec;
   for (const fs::path& p : need)
     if (!fs::is_regular_file(p, ec)) throw InputError(p.string() + ": missing from the dataset (verify reads it)");
 }
 
-/// The frame's label, depth and normal files.
-FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Camera& camera) {
+/// The frame's label, depth and normal files of one camera (`right`: a stereo rig's right camera).
+FrameTruth read_truth(const io::Dataset& d, const io::DatasetFrame& f, const Camera& camera, bool right) {
+  const auto folder = [right](const char* name) { return io::camera_folder(name, right); };
   FrameTruth t;
-  const cv::Mat semantic = d.image(f, "semantic", CV_8UC1);
+  const cv::Mat semantic = d.image(f, folder("semantic"), CV_8UC1);
   if (semantic.cols != camera.width || semantic.rows != camera.height)
-    throw InputError(d.file(f, "semantic", "png").string() + ": not the size its camera file gives");
+    throw InputError(d.file(f, folder("semantic"), "png").string() + ": not the size its camera file gives");
   t.width = semantic.cols;
   t.height = semantic.rows;
   const size_t n = size_t(t.width) * size_t(t.height);
   t.semantic.assign(semantic.datastart, semantic.datastart + n);
   if (d.has("depth_exr")) {
-    const cv::Mat depth = io::read_depth_exr(d.file(f, "depth_exr", "exr"), semantic);
+    const cv::Mat depth = io::read_depth_exr(d.file(f, folder("depth_exr"), "exr"), semantic);
     t.depth.assign(depth.ptr<float>(), depth.ptr<float>() + n);
   } else {
-    const cv::Mat depth = d.image(f, "depth", CV_16UC1);
+    const cv::Mat depth = d.image(f, folder("depth"), CV_16UC1);
     t.depth.resize(n);
     for (size_t i = 0; i < n; ++i) t.depth[i] = float(depth.ptr<uint16_t>()[i]) / 1000.0f;
     t.depth_step = 0.001;
   }
   if (d.has("instance")) {
-    const fs::path table_path = d.file(f, "instance", "json");
+    const fs::path table_path = d.file(f, folder("instance"), "json");
     const std::vector<io::InstanceEntry> table = io::read_instance_table(table_path);
-    const cv::Mat index = d.image(f, "instance", CV_16UC1);
+    const cv::Mat index = d.image(f, folder("instance"), CV_16UC1);
     t.instance.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const uint16_t k = index.ptr<uint16_t>()[i];
       if (k > table.size())
-        throw InputError(d.file(f, "instance", "png").string() + ": index " + std::to_string(k) + " is not in " +
+        throw InputError(d.file(f, folder("instance"), "png").string() + ": index " + std::to_string(k) + " is not in " +
                          table_path.string());
       t.instance[i] = k ? table[k - 1].instance_id : 0;
     }
   }
   if (d.has("normal")) {
-    const cv::Mat normal = d.image(f, "normal", CV_8UC3);
+    const cv::Mat normal = d.image(f, folder("normal"), CV_8UC3);
     t.normal.resize(n);
     for (size_t i = 0; i < n; ++i) {
       const uint8_t* bgr = normal.ptr<uint8_t>() + 3 * i;
@@ -189,14 +193,20 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   if (!d.has("depth_exr")) d.require("depth", "verify");
   if (d.frames.empty()) throw InputError(d.dir.string() + ": the dataset holds no frames");
   const std::vector<size_t> chosen = choose_frames(d, request.frames);
-  for (const size_t i : chosen) check_frame_files(d, d.frames[i]);
+  const nlohmann::json& config = d.manifest.at("config");
+  const bool stereo = config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
+  for (const size_t i : chosen) {
+    check_frame_files(d, d.frames[i], false);
+    if (stereo) check_frame_files(d, d.frames[i], true);
+  }
   const LoadedConfig loaded = dataset_config(d);
   const RunSetup setup = make_run_setup(loaded);
   check_library(d, setup);
   const Mat4d lidar_to_camera = d.has("lidar") ? manifest_lidar_to_camera(d) : Mat4d::Identity();
   const double lidar_reach = d.has("lidar") ? setup.lidar.max_range : 0.0;
   reporter.note("silva verify: " + std::to_string(chosen.size()) + " of " + std::to_string(d.frames.size()) +
-                " frames, " + std::to_string(int(std::lround(100 * request.sample))) + " % of their pixels");
+                " frames" + (stereo ? " (both cameras of the stereo pair)" : "") + ", " +
+                std::to_string(int(std::lround(100 * request.sample))) + " % of their pixels");
 
   world::ChunkCache cache(kCacheChunks);
   const bool as_drawn = loaded.config.render.lod && !request.full_detail;
@@ -213,10 +223,10 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   if (d.has("lidar")) counts.lidar = LidarTally{};
   std::vector<raycast::RayHit> hits;  // kept across frames: a frame's hits are tens of MB
   Progress progress(reporter, int(chosen.size()), "frames");
-  for (size_t k = 0; k < chosen.size(); ++k) {
-    const io::DatasetFrame& f = d.frames[chosen[k]];
-    const Camera camera = io::read_camera_json(d.file(f, "camera", "json")).camera;
-    const FrameTruth truth = read_truth(d, f, camera);
+  // One camera of a chosen frame: its pixels cast against the world and compared with its files.
+  const auto check_view = [&](const io::DatasetFrame& f, bool right) {
+    const Camera camera = io::read_camera_json(d.file(f, io::camera_folder("camera", right), "json")).camera;
+    const FrameTruth truth = read_truth(d, f, camera, right);
     const auto chunks = cache.require(setup.world, systems::capture_chunks(camera, setup.world.chunk_size(), lidar_reach));
     if (as_drawn)
       drawn.show(builder.build(chunks, camera.position(), ground_cover), camera);
@@ -230,12 +240,17 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
     nlohmann::json frame = tally_summary(tally, counts.instances);
     frame["sequence"] = f.sequence;
     frame["frame"] = f.frame;
-    if (counts.lidar) {
+    if (stereo) frame["camera"] = right ? "right" : "left";
+    if (counts.lidar && !right) {
       const LidarTally lidar = check_lidar_frame(d, f, truth, camera, lidar_to_camera);
       counts.lidar->merge(lidar);
       frame["lidar_class_agreement"] = lidar.compared ? double(lidar.class_agree) / double(lidar.compared) : 1.0;
     }
     counts.frames.push_back(frame);
+  };
+  for (size_t k = 0; k < chosen.size(); ++k) {
+    check_view(d.frames[chosen[k]], false);
+    if (stereo) check_view(d.frames[chosen[k]], true);
     progress.update(int(k + 1));
   }
   progress.finish();
