@@ -41,7 +41,8 @@ TEST(FuzzCorpus, SeedsOfTheShippedFilesAreAccepted) {
       {"gltf", "triangle.gltf"},      {"glb", "triangle.glb"},       {"marker", "marker.json"},
       {"set", "float"},               {"camera_json", "autopilot_000000.json"}, {"png", "semantic_96x64.png"},
       {"manifest", "valid.json"},     {"label_png", "semantic_16x12.png"},      {"label_png", "instance_16x12.png"},
-      {"imu_csv", "imu.csv"},         {"imu_yaml", "imu.yaml"}};
+      {"imu_csv", "imu.csv"},         {"imu_yaml", "imu.yaml"},      {"trajectory_file", "groundtruth.txt"},
+      {"camera_json", "stereo_right_000000.json"}};
   for (const auto& [name, file] : valid) {
     for (const FuzzTarget& target : fuzz_targets()) {
       if (std::string(target.name) != name) continue;

@@ -24,6 +24,7 @@
 #include "io/pose_file.hpp"
 #include "io/run_folder.hpp"
 #include "io/trajectory_files.hpp"
+#include "io/tum_trajectory_file.hpp"
 
 namespace silva::fuzz {
 
@@ -149,12 +150,15 @@ void imu_csv(std::string_view input) { io::read_euroc_imu_csv(scratch_file("imu.
 /// A trajectory sequence's imu.yaml.
 void imu_yaml(std::string_view input) { io::read_kalibr_imu_yaml(scratch_file("imu.yaml", input)); }
 
+/// A user's TUM trajectory (trajectory.file).
+void trajectory_file(std::string_view input) { io::read_tum_trajectory(scratch_file("walk.txt", input)); }
+
 constexpr FuzzTarget kTargets[] = {
     {"config", config_file}, {"set", set_override}, {"pose_json", pose_json}, {"pose_csv", pose_csv},
     {"ontology", ontology},  {"lighting", lighting}, {"library", library},     {"gltf", gltf},
     {"glb", glb},            {"obj", obj},           {"marker", marker},  {"camera_json", camera_json},
     {"png", png},            {"manifest", dataset_manifest}, {"label_png", label_png},
-    {"imu_csv", imu_csv},    {"imu_yaml", imu_yaml},
+    {"imu_csv", imu_csv},    {"imu_yaml", imu_yaml},     {"trajectory_file", trajectory_file},
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "world/trajectory.hpp"
 #include "world/world_generator.hpp"
 #include "tests/common/test_library.hpp"
+#include "tests/common/walk_checks.hpp"
 
 namespace silva::world {
 namespace {
@@ -57,14 +58,9 @@ TEST(TrajectoryFile, TurnRateIsTheDerivativeOfTheRotationWithPitchAndRollTurning
   WorldContext file_world = still_walk_world();
   file_world.walk_poses = sampled_poses(Trajectory(trail_world), 0.0, 0.05, 15.0, true);
   const Trajectory walk(file_world);
-  const double h = 1e-5;
   for (double t = 0.05; t < 15.0; t += 0.613) {
-    const RigState s = walk.at(t), before = walk.at(t - h), after = walk.at(t + h);
-    EXPECT_LT(((after.position - before.position) / (2 * h) - s.velocity).norm(), 1e-6) << t;
-    EXPECT_LT(((after.velocity - before.velocity) / (2 * h) - s.acceleration).norm(), 1e-4) << t;
-    const Mat3d turn = (s.rotation.transpose() * after.rotation - s.rotation.transpose() * before.rotation) / (2 * h);
-    EXPECT_LT((Vec3d(turn(2, 1), turn(0, 2), turn(1, 0)) - s.angular_velocity).norm(), 1e-6) << t;
-    EXPECT_NEAR(s.pitch_deg, 10.0 * std::sin(0.4 * t), 0.2) << t;  // the wave survives the smoothing
+    test::expect_exact_derivatives(walk, t);
+    EXPECT_NEAR(walk.at(t).pitch_deg, 10.0 * std::sin(0.4 * t), 0.2) << t;  // the wave survives the smoothing
   }
 }
 

@@ -15,6 +15,7 @@
 #include "world/terrain.hpp"
 #include "world/world_generator.hpp"
 #include "tests/common/test_library.hpp"
+#include "tests/common/walk_checks.hpp"
 
 namespace silva::world {
 namespace {
@@ -57,16 +58,7 @@ TEST(CubicBSpline, DerivativesMatchDifferencesAcrossKnots) {
 
 TEST(Trajectory, VelocityAccelerationAndTurnRateAreTheDerivativesOfThePose) {
   const Trajectory walk(walk_world());
-  const double h = 1e-5;
-  for (double t = 0.05; t < 20.0; t += 0.731) {
-    const RigState s = walk.at(t), before = walk.at(t - h), after = walk.at(t + h);
-    EXPECT_LT(((after.position - before.position) / (2 * h) - s.velocity).norm(), 1e-6) << t;
-    EXPECT_LT(((after.velocity - before.velocity) / (2 * h) - s.acceleration).norm(), 1e-4) << t;
-    // R(t + h) = R(t) exp(h [w]x) to first order, w in the camera's axes.
-    const Mat3d turn = (s.rotation.transpose() * after.rotation - s.rotation.transpose() * before.rotation) / (2 * h);
-    const Vec3d w(turn(2, 1), turn(0, 2), turn(1, 0));
-    EXPECT_LT((w - s.angular_velocity).norm(), 1e-6) << t;
-  }
+  for (double t = 0.05; t < 20.0; t += 0.731) test::expect_exact_derivatives(walk, t);
 }
 
 TEST(Trajectory, FramesWalkTheTrailAtTheConfiguredSpeedAndHeight) {
