@@ -458,8 +458,8 @@ def check_semantickitti():
         assert doc["split"]["train"] == sorted(int(numbers[s]) for s in manifest["frames"])
     r = silva("export", DATASET, "--format", "all", "--out", os.path.join(work, "all"), "--json")
     assert [e["format"] for e in json.loads(r.stdout)["exports"]] == \
-        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio", "rosbag2"], \
-        "all: every camera format and rosbag2, semantickitti only with lidar"
+        ["coco-panoptic", "coco-instances", "cityscapes", "colmap", "nerfstudio", "rosbag2", "tartanair"], \
+        "all: every camera format, rosbag2 and tartanair, semantickitti only with lidar, euroc only with a trajectory"
     r = silva("export", DATASET, "--format", "semantickitti", "--out", os.path.join(work, "none"), expect=2)
     assert "needs output type 'lidar'" in r.stderr and r.stderr.count("\n") == 1, r.stderr
     r = silva("generate", "--seed", "1", "--out", os.path.join(work, "none"), "--set", 'output.formats=["semantickitti"]',
