@@ -26,6 +26,7 @@ struct DatasetFrame {
 };
 
 /// A finished dataset folder <output.dir>/<seed>/ (it has manifest.json).
+// NOLINTNEXTLINE(bugprone-exception-escape): nlohmann::json's destructor flattens nested values into a std::vector
 struct Dataset {
   std::filesystem::path dir;        ///< The run folder.
   int64_t seed = 0;                 ///< From the manifest.

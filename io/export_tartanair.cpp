@@ -93,7 +93,9 @@ void export_tartanair(const Dataset& d, const fs::path& out, const ExportOptions
   std::map<std::string, std::vector<DatasetFrame>> sequences;
   for (const DatasetFrame& f : d.frames) sequences[f.sequence].push_back(f);
   size_t done = 0;
-  for (const auto& [name, frames] : sequences) {
+  for (const auto& sequence : sequences) {
+    const std::string& name = sequence.first;
+    const std::vector<DatasetFrame>& frames = sequence.second;
     const fs::path seq = out / name;
     for (const bool right : {false, true}) {
       if (right && !stereo) continue;

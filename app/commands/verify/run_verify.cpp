@@ -183,6 +183,28 @@ LidarTally check_lidar_frame(const io::Dataset& d, const io::DatasetFrame& f, co
   return compare_lidar(truth, camera, lidar_to_camera, points, labels);
 }
 
+/// Writes verify.json and VERIFY.md into the dataset and reports the verdict of `frames` checked frames; the exit
+/// code: 0 on a pass, kExitVerifyFailed otherwise.
+int write_verdict(const io::Dataset& d, const VerifyRequest& request, const VerifyCounts& counts, size_t frames,
+                  double seconds, const Reporter& reporter) {
+  const nlohmann::json verify = verify_json(d, request, counts);
+  io::write_file_atomic(d.dir / "verify.json", verify.dump(2) + "\n");
+  io::write_file_atomic(d.dir / "VERIFY.md", verify_markdown(verify));
+  const bool pass = verify["verdict"]["pass"].get<bool>();
+  char line[256];
+  std::snprintf(line, sizeof line, "%s: class %.4f %% of interior pixels, depth within %.3g %% on %.4f %% of hit pixels",
+                pass ? "PASS" : "FAIL", 100 * verify["class"]["interior"]["agreement"].get<double>(),
+                request.depth_tolerance, 100 * verify["depth"]["within_tolerance"].get<double>());
+  nlohmann::json summary = verify;
+  summary["ok"] = pass;
+  summary["exit_code"] = pass ? 0 : kExitVerifyFailed;
+  summary["run_dir"] = d.dir.string();
+  summary["seconds"] = seconds;
+  reporter.result(summary, std::string("silva verify: ") + line + " (" + std::to_string(frames) +
+                               " frames); wrote " + (d.dir / "VERIFY.md").string() + " and verify.json");
+  return pass ? 0 : kExitVerifyFailed;
+}
+
 }  // namespace
 
 int run_verify(const VerifyRequest& request, const Reporter& reporter) {
@@ -255,22 +277,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   }
   progress.finish();
 
-  const nlohmann::json verify = verify_json(d, request, counts);
-  io::write_file_atomic(d.dir / "verify.json", verify.dump(2) + "\n");
-  io::write_file_atomic(d.dir / "VERIFY.md", verify_markdown(verify));
-  const bool pass = verify["verdict"]["pass"].get<bool>();
-  char line[256];
-  std::snprintf(line, sizeof line, "%s: class %.4f %% of interior pixels, depth within %.3g %% on %.4f %% of hit pixels",
-                pass ? "PASS" : "FAIL", 100 * verify["class"]["interior"]["agreement"].get<double>(),
-                request.depth_tolerance, 100 * verify["depth"]["within_tolerance"].get<double>());
-  nlohmann::json summary = verify;
-  summary["ok"] = pass;
-  summary["exit_code"] = pass ? 0 : kExitVerifyFailed;
-  summary["run_dir"] = d.dir.string();
-  summary["seconds"] = clock.seconds();
-  reporter.result(summary, std::string("silva verify: ") + line + " (" + std::to_string(chosen.size()) +
-                               " frames); wrote " + (d.dir / "VERIFY.md").string() + " and verify.json");
-  return pass ? 0 : kExitVerifyFailed;
+  return write_verdict(d, request, counts, chosen.size(), clock.seconds(), reporter);
 }
 
 }  // namespace silva::app
