@@ -160,6 +160,11 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
   return m;
 }
 
+bool manifest_stereo(const nlohmann::json& manifest) {
+  const nlohmann::json& config = manifest.at("config");
+  return config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
+}
+
 cv::Mat Dataset::depth_metres(const DatasetFrame& f, bool right) const {
   cv::Mat m;
   if (has("depth_exr")) {

@@ -56,6 +56,10 @@ struct Dataset {
   std::vector<uint32_t> lidar_labels(const DatasetFrame& f) const;
 };
 
+/// True when a manifest's config has rig.preset = "stereo" (a pair per capture); false for one camera or a manifest
+/// from before the rig existed.
+bool manifest_stereo(const nlohmann::json& manifest);
+
 /// Opens a finished dataset: InputError naming the folder when it is not one (no .silva-run.json,
 /// no manifest.json, or a malformed manifest/ontology).
 Dataset open_dataset(const std::filesystem::path& dir);

@@ -88,8 +88,7 @@ void export_tartanair(const Dataset& d, const fs::path& out, const ExportOptions
   d.require("rgb", "tartanair");
   d.require("semantic", "tartanair");
   if (!d.has("depth_exr")) d.require("depth", "tartanair");
-  const nlohmann::json& config = d.manifest.at("config");
-  const bool stereo = config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
+  const bool stereo = manifest_stereo(d.manifest);
   std::map<std::string, std::vector<DatasetFrame>> sequences;
   for (const DatasetFrame& f : d.frames) sequences[f.sequence].push_back(f);
   size_t done = 0;

@@ -87,9 +87,12 @@ std::pair<CubicBSpline, CubicBSpline> file_curves(const std::vector<TimedPose>& 
   return {CubicBSpline(std::move(path), kTrajectoryKnotStep), CubicBSpline(std::move(attitude), kTrajectoryKnotStep)};
 }
 
-/// The walk's position and yaw curve: through ctx.walk_poses, else along the trail.
-CubicBSpline path_curve(const WorldContext& ctx) {
-  return ctx.walk_poses.empty() ? walk_curve(ctx) : file_curves(ctx.walk_poses).first;
+/// The walk's position and yaw curve, and its pitch and roll curve when it goes through ctx.walk_poses (none: along
+/// the trail).
+std::pair<CubicBSpline, std::optional<CubicBSpline>> walk_curves(const WorldContext& ctx) {
+  if (ctx.walk_poses.empty()) return {walk_curve(ctx), std::nullopt};
+  auto [path, attitude] = file_curves(ctx.walk_poses);
+  return {std::move(path), std::move(attitude)};
 }
 
 }  // namespace
@@ -99,7 +102,9 @@ std::pair<double, double> camera_height_and_pitch(const Config& c) {
                            : std::pair{c.camera.ground_height, 0.0};
 }
 
-Trajectory::Trajectory(const WorldContext& ctx)
+Trajectory::Trajectory(const WorldContext& ctx) : Trajectory(ctx, walk_curves(ctx)) {}
+
+Trajectory::Trajectory(const WorldContext& ctx, std::pair<CubicBSpline, std::optional<CubicBSpline>> curves)
     : duration_(ctx.walk_poses.empty() ? ctx.config.trajectory.duration_s
                                        : ctx.walk_poses.back().t - ctx.walk_poses.front().t),
       start_m_(ctx.config.trajectory.start_m),
@@ -108,9 +113,8 @@ Trajectory::Trajectory(const WorldContext& ctx)
       bob_m_(ctx.config.trajectory.bob_m),
       sway_deg_(ctx.config.trajectory.sway_deg),
       step_hz_(ctx.config.trajectory.step_hz),
-      curve_(path_curve(ctx)) {
-  if (!ctx.walk_poses.empty()) attitude_ = file_curves(ctx.walk_poses).second;
-}
+      curve_(std::move(curves.first)),
+      attitude_(std::move(curves.second)) {}
 
 RigState Trajectory::at(double t) const {
   const CubicBSpline::Sample c = curve_.at(t);

@@ -54,6 +54,9 @@ class Trajectory {
   double duration() const { return duration_; }
 
  private:
+  /// The walk of `ctx` with its curves (walk_curves in trajectory.cpp): position and yaw, pitch and roll or none.
+  Trajectory(const WorldContext& ctx, std::pair<CubicBSpline, std::optional<CubicBSpline>> curves);
+
   double duration_, start_m_, speed_, pitch_deg_, bob_m_, sway_deg_, step_hz_;
   CubicBSpline curve_;  ///< x, y, z (without the bob), yaw in degrees (unwrapped).
   std::optional<CubicBSpline> attitude_;  ///< Pitch and roll in degrees of a walk from a file (none: on the trail).

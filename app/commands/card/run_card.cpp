@@ -63,7 +63,7 @@ std::string percent(double share) {
 nlohmann::json rig_summary(const nlohmann::json& manifest) {
   const nlohmann::json& config = manifest.at("config");
   const nlohmann::json rig = config.value("rig", nlohmann::json::object());
-  const bool stereo = rig.value("preset", "mono") == "stereo";
+  const bool stereo = io::manifest_stereo(manifest);
   const bool imu = manifest.at("frames").contains("trajectory") && config.contains("trajectory");
   return {{"preset", rig.value("preset", "mono")},
           {"baseline_m", stereo ? rig.at("baseline_m") : nlohmann::json()},

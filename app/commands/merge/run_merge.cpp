@@ -8,6 +8,7 @@
 #include "app/commands/merge/merge_command.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/dataset_reader.hpp"
 #include "io/capture_set.hpp"
 #include "io/json_read.hpp"
 #include "io/output_types.hpp"
@@ -54,8 +55,7 @@ int merge_shards(const MergeRequest& request, const Reporter& reporter) {
       throw InputError(dir.string() + ": shard " + std::to_string(i) + " was made with a different config than shard 0");
   const io::OutputSelection outputs =
       io::OutputSelection::from_names(manifest.at("config").at("output").at("types").get<std::vector<std::string>>());
-  const nlohmann::json& config = manifest.at("config");
-  const bool stereo = config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
+  const bool stereo = io::manifest_stereo(manifest);
   int frames = 0;
   for (const auto& [sequence, n] : manifest.at("frames").items())
     for (int f = 0; f < n.get<int>(); ++f, ++frames) {

@@ -215,8 +215,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   if (!d.has("depth_exr")) d.require("depth", "verify");
   if (d.frames.empty()) throw InputError(d.dir.string() + ": the dataset holds no frames");
   const std::vector<size_t> chosen = choose_frames(d, request.frames);
-  const nlohmann::json& config = d.manifest.at("config");
-  const bool stereo = config.contains("rig") && config.at("rig").value("preset", "mono") == "stereo";
+  const bool stereo = io::manifest_stereo(d.manifest);
   for (const size_t i : chosen) {
     check_frame_files(d, d.frames[i], false);
     if (stereo) check_frame_files(d, d.frames[i], true);
