@@ -138,12 +138,11 @@ struct TrajectoryConfig {
   std::string file;                 ///< trajectory.file: a TUM trajectory the walk follows ("" = the trail)
 };
 
-/// [rig]: the cameras each capture renders.
+/// [rig]: the sensor rig of every capture (core/rig_presets.hpp).
 struct RigConfig {
-  std::string preset = "mono";  ///< rig.preset: "mono" (one camera) or "stereo" (a rectified pair)
+  std::string preset = "mono";  ///< rig.preset: a RigPreset name (mono, stereo, ground_robot, drone)
   double baseline_m = 0.12;     ///< rig.baseline_m: stereo baseline, metres (the right camera along the left's +x)
-  /// The baseline of the right camera, metres: baseline_m for a stereo rig, 0 for one camera.
-  double stereo_baseline_m() const { return preset == "stereo" ? baseline_m : 0.0; }
+  double height_m = 0;          ///< rig.height_m: camera height above the ground, metres (0: the preset's)
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

@@ -4,9 +4,13 @@ disparity, the forward flow in the Middlebury colour wheel, the left semantic co
 
 Usage: scripts/rig_sheet.py RUN_DIR [--frame 20] [--out docs/rig-sheet.jpg]
 RUN_DIR is <output.dir>/<seed>/ of a run with rig.preset = "stereo", the trajectory sequence, trajectory.flow
-and output types rgb, semantic_color and depth. Needs numpy and OpenCV (Debian: python3-numpy python3-opencv).
+and output types rgb, semantic_color and depth.
+With --presets, each RUN_DIR (one per rig preset, the same trajectory frame) gives a column: its RGB over its
+semantic colours, labelled with the run's rig.preset.
+Needs numpy and OpenCV (Debian: python3-numpy python3-opencv).
 """
 import argparse
+import json
 import pathlib
 import sys
 
@@ -73,13 +77,34 @@ def imu_plot(csv, height):
     return canvas
 
 
+def presets_sheet(run_dirs, frame):
+    """One column per run: its trajectory frame's RGB over its semantic colours, labelled with the rig preset."""
+    columns = []
+    for run_dir in run_dirs:
+        manifest = json.loads((run_dir / "manifest.json").read_text())
+        preset = manifest["config"]["rig"]["preset"]
+        name = f"{frame:06d}.png"
+        rgb = cv2.imread(str(run_dir / "trajectory" / "rgb" / name))
+        semantic = cv2.imread(str(run_dir / "trajectory" / "semantic_color" / name))
+        if rgb is None or semantic is None:
+            raise SystemExit(f"rig_sheet: {run_dir} lacks trajectory rgb/semantic_color frame {name}")
+        columns.append(np.vstack([labelled(rgb, f"rig.preset = {preset}"),
+                                  labelled(semantic, "semantic")]))
+    return np.hstack(columns)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("run_dir", type=pathlib.Path)
+    parser.add_argument("run_dir", type=pathlib.Path, nargs="+")
     parser.add_argument("--frame", type=int, default=20)
+    parser.add_argument("--presets", action="store_true")
     parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("docs/rig-sheet.jpg"))
     args = parser.parse_args()
-    seq = args.run_dir / "trajectory"
+    if args.presets:
+        cv2.imwrite(str(args.out), presets_sheet(args.run_dir, args.frame), [cv2.IMWRITE_JPEG_QUALITY, 88])
+        print(f"wrote {args.out}")
+        return 0
+    seq = args.run_dir[0] / "trajectory"
     name = f"{args.frame:06d}.png"
     images = {}
     for folder in ("rgb", "rgb_right", "semantic_color", "disparity", "flow_forward"):

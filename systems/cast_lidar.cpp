@@ -1,10 +1,12 @@
 #include "systems/cast_lidar.hpp"
 
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "components/camera.hpp"
 #include "components/phase.hpp"
+#include "components/sensor.hpp"
 #include "components/world_source.hpp"
 #include "core/stopwatch.hpp"
 #include "raycast/lidar.hpp"
@@ -90,10 +92,13 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
       .after("render_views")
       .reads_resource<WorldSource, CaptureSettings, PreparedScene>()
       .writes_resource<FrameSlots, ChunkRayScene>()
+      .reads<LidarSensor>()
       .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
         FrameSlots& slots = sys.resource<FrameSlots>();
+        std::optional<Mat4d> mount;  // the rig's LiDAR, if it carries one
+        sys.each<const LidarSensor>([&](const LidarSensor& l) { mount = l.sensor_to_camera; });
+        if (!slots.current || !mount) return;
         const CaptureSettings& settings = sys.resource<const CaptureSettings>();
-        if (!slots.current || !settings.outputs.has(io::OutputType::Lidar)) return;
         const Stopwatch clock;
         FrameWork& work = *slots.current;
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
@@ -102,15 +107,14 @@ void install_cast_lidar(ecs::World& world, const assets::AssetLibrary& library) 
         const Camera& camera = work.frame.camera;
         rays.sync(sys.resource<const PreparedScene>().frame.chunks, builder, config.render.ground_cover_distance,
                   camera.position());
-        const Mat4d sensor = camera.camera_to_world * lidar_to_camera(config.lidar);
+        const Mat4d sensor = camera.camera_to_world * *mount;
         raycast::SweepPose pose;
         pose.sensor_to_world = sensor.block<3, 3>(0, 0);
         pose.position = sensor.block<3, 1>(0, 3);
         pose.seed = uint64_t(config.seed);
         pose.key = render::noise_key(work.frame.sequence, uint64_t(work.frame.frame));
         if (config.lidar.motion_distortion && (work.frame.trail_s || work.frame.walk)) {
-          const Mat4d end =
-              world::sweep_end_pose(ctx, work.frame, settings.lidar.rotation_hz) * lidar_to_camera(config.lidar);
+          const Mat4d end = world::sweep_end_pose(ctx, work.frame, settings.lidar.rotation_hz) * *mount;
           pose.end = raycast::SweepEnd{end.block<3, 3>(0, 0), end.block<3, 1>(0, 3)};
         }
         raycast::CastOptions options;

@@ -1,9 +1,12 @@
 #include "systems/render_views.hpp"
 
+#include <algorithm>
 #include <utility>
+#include <vector>
 
 #include "components/camera.hpp"
 #include "components/phase.hpp"
+#include "components/sensor.hpp"
 #include "components/world_source.hpp"
 #include "core/stopwatch.hpp"
 #include "render/shadow_plan.hpp"
@@ -58,14 +61,18 @@ void render_right(const render::Scene& scene, const render::RenderOptions& optio
 }  // namespace
 
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
-                  render::Renderer& renderer, FrameWork& work) {
+                  std::span<const CameraSensor> cameras, render::Renderer& renderer, FrameWork& work) {
   const Camera& camera = work.frame.camera;
   work.lighting = render::frame_lighting(settings.lighting, uint64_t(ctx.config.seed), work.frame.sequence,
                                          uint64_t(work.frame.frame));
   render::RenderOptions options;
   options.lod = ctx.config.render.lod;
-  render_camera(scene, camera, options, renderer, work);
-  if (settings.stereo_baseline_m > 0) render_right(scene, options, settings.stereo_baseline_m, renderer, work);
+  for (const CameraSensor& sensor : cameras) {
+    if (sensor.right)
+      render_right(scene, options, sensor.baseline_m, renderer, work);
+    else
+      render_camera(scene, camera, options, renderer, work);
+  }
   if (!settings.outputs.has(io::OutputType::Rgb)) return;
   const Stopwatch clock;
   const Vec3d sun = render::sun_direction(work.lighting.preset).cast<double>();
@@ -83,17 +90,21 @@ void install_render_views(ecs::World& world, CaptureSettings settings) {
       .phase(Phase::Render)
       .reads_resource<WorldSource, CaptureQueue, CaptureSettings, PreparedScene>()
       .writes_resource<FrameSlots>()
-      .reads<world::PlannedFrame>()
+      .reads<world::PlannedFrame, CameraSensor>()
       .run([](ecs::SystemContext& sys) {
         FrameSlots& slots = sys.resource<FrameSlots>();
         const ecs::Entity camera = sys.resource<const CaptureQueue>().active;
         slots.current = nullptr;
         if (camera.is_null()) return;
+        std::vector<CameraSensor> cameras;  // the left camera first: the right one's shadow and exposure are its
+        sys.each<const CameraSensor>([&](const CameraSensor& c) { cameras.push_back(c); });
+        std::stable_sort(cameras.begin(), cameras.end(),
+                         [](const CameraSensor& a, const CameraSensor& b) { return !a.right && b.right; });
         std::shared_ptr<FrameWork> work = slots.take();
         work->frame = sys.get<const world::PlannedFrame>(camera);
         work->files.clear();
         render_frame(sys.resource<const PreparedScene>().frame.scene, *sys.resource<const WorldSource>().ctx,
-                     sys.resource<const CaptureSettings>(), *slots.renderer, *work);
+                     sys.resource<const CaptureSettings>(), cameras, *slots.renderer, *work);
         slots.current = std::move(work);
       });
 }

@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <vector>
 
+#include "components/sensor.hpp"
 #include "core/lidar_point.hpp"
 #include "core/ontology.hpp"
 #include "ecs/world.hpp"
@@ -21,6 +23,12 @@
 #include "world/plan_captures.hpp"
 
 namespace silva::systems {
+
+/// A view is blocked (the camera inside foliage or against bark) when at least kBlockedViewShare of its pixels see a
+/// surface nearer than kBlockedViewDepth metres.
+inline constexpr float kBlockedViewDepth = 0.5f;
+/// Share of a blocked view's pixels nearer than kBlockedViewDepth.
+inline constexpr double kBlockedViewShare = 0.3;
 
 /// Resource: what a capture run renders and where it writes.
 struct CaptureSettings {
@@ -47,6 +55,7 @@ struct FrameWork {
   std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class (role) in the view.
   io::CardCounts card;               ///< The dataset card's label counts of the frame (from the planes).
   uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
+  uint64_t near_pixels = 0;          ///< Pixels whose surface is nearer than kBlockedViewDepth (a blocked view's)
   std::vector<LidarPoint> lidar;     ///< The frame's LiDAR sweep (empty when lidar is not selected).
   double lidar_s = 0;                ///< Wall time of the sweep (scene update and cast).
   /// The stereo pair's right view (rendered when CaptureSettings::stereo_baseline_m > 0, else left as it was): this
@@ -71,10 +80,10 @@ class FrameSlots {
   std::shared_ptr<Pool> pool_ = std::make_shared<Pool>();
 };
 
-/// Renders `work.frame`'s G-buffer (and its shadow map when rgb is selected) from `scene`, and with a stereo
-/// baseline the right camera's G-buffer into work.right.
+/// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from `scene` — the left camera's into
+/// `work`, a stereo pair's right camera's into work.right — and the left camera's shadow map when rgb is selected.
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
-                  render::Renderer& renderer, FrameWork& work);
+                  std::span<const CameraSensor> cameras, render::Renderer& renderer, FrameWork& work);
 
 /// Registers "render_views" (phase Render): when a camera is active, renders the PreparedScene
 /// into a fresh FrameSlots slot, left in FrameSlots::current for the Write phase.

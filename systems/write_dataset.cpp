@@ -92,6 +92,8 @@ void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings
   }
   work.pixels_by_role.fill(0);
   for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
+  work.near_pixels = uint64_t(std::count_if(work.gbuffer.depth.begin(), work.gbuffer.depth.end(),
+                                            [](float d) { return d > 0.0f && d < kBlockedViewDepth; }));
   const Stopwatch clock;
   const io::LabelPlanes planes = label_planes(work.gbuffer);
   work.files = io::encode_capture_set(planes, work.rgb, settings.ontology, settings.outputs, f.frame, f.right);
@@ -163,6 +165,9 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   stats.lidar_points += work.lidar.size();
   for (int r = 0; r < kRoleCount; ++r) stats.pixels_by_role[size_t(r)] += work.pixels_by_role[size_t(r)];
   stats.bare_soil_pixels += work.bare_soil_pixels;
+  if (double(work.near_pixels) >= kBlockedViewShare * double(work.gbuffer.depth.size())) {
+    if (stats.blocked_views++ == 0) stats.first_blocked = work.frame.sequence + " frame " + std::to_string(work.frame.frame);
+  }
   io::add_label_counts(stats.card.totals, work.card);
   stats.card.frames.emplace(work.frame.sequence, work.frame.frame);
   ++stats.frames_written;

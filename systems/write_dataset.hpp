@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "ecs/ordered_stage.hpp"
 #include "ecs/world.hpp"
@@ -31,6 +32,8 @@ struct CaptureStats {
   uint64_t chunks_generated = 0;      ///< Chunks generated (cache misses).
   std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class over the frames written.
   uint64_t bare_soil_pixels = 0;      ///< Forest-floor pixels that look like bare soil (rgb frames).
+  int blocked_views = 0;              ///< Frames whose left camera's view is blocked (kBlockedViewShare).
+  std::string first_blocked;          ///< "<sequence> frame <n>" of the first blocked view ("" when none).
   double stream_s = 0;   ///< Stream .. Resolve phases (chunk generation on misses included).
   double prepare_s = 0;  ///< Scene building.
   double render_s = 0;   ///< Visibility pass + resolve.

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.hpp"
+#include "core/rig_presets.hpp"
 #include "core/rng.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/pose_clearance.hpp"
+#include "world/rig_mount_check.hpp"
 #include "world/terrain.hpp"
 #include "world/trajectory.hpp"
 
@@ -194,7 +197,7 @@ std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector
   for (size_t i = 0; i < poses.size(); ++i) {
     const PoseEntry& p = poses[i];
     Vec3d position = p.position;
-    if (!p.has_z) position.z() = terrain_height(ctx.terrain, p.position.x(), p.position.y()) + ctx.config.camera.ground_height;
+    if (!p.has_z) position.z() = terrain_height(ctx.terrain, p.position.x(), p.position.y()) + rig_camera_height(ctx.config);
     PlannedFrame f = make_frame(ctx, "custom", int(i), position, p.yaw_deg, p.pitch_deg, p.roll_deg, false);
     f.camera.camera_to_world.block<3, 3>(0, 0) = p.rotation;  // exact matrix when the file gave one
     frames.push_back(std::move(f));
@@ -222,6 +225,31 @@ std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
     frames.push_back(std::move(f));
   }
   return frames;
+}
+
+void check_walk(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames,
+                const std::function<void(const std::string&)>& warn) {
+  const CrownProfiles crowns(*ctx.library);
+  const PlannedFrame* first = nullptr;
+  int blocked = 0;
+  for (PlannedFrame& f : frames) {
+    const Vec3d eye = f.camera.position();
+    const double here = ClearanceProbe::reach(ctx, 0.0);
+    const ClearanceProbe probe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), here, ctx.chunk_size())),
+                               eye.x(), eye.y(), 0.0);
+    f.pose_fix = probe.solid_at(eye, ctx.config.camera.near) ? PoseFix::Unresolvable : PoseFix::Clear;
+    if (f.pose_fix == PoseFix::Clear) continue;
+    if (!first) first = &f;
+    ++blocked;
+  }
+  if (!first) return;
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "trajectory: the camera is inside a solid object (a trunk, rock or log) in %d of %zu frames (first: "
+                "frame %d, %.2f s), where bark fills the view; another trajectory.start_m or seed avoids them",
+                blocked, frames.size(), first->frame,
+                double(first->frame) / ctx.config.trajectory.camera_hz);
+  warn(text);
 }
 
 Mat4d sweep_end_pose(const WorldContext& ctx, const PlannedFrame& f, double rotation_hz) {
@@ -253,6 +281,7 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
         continue;
       }
       frames = plan_trajectory(ctx);
+      check_walk(ctx, cache, frames, warn);
     } else {
       throw InputError("captures.sequences: unknown sequence \"" + sequence +
                        "\"; allowed: autopilot, random, custom, trajectory");
@@ -265,6 +294,7 @@ std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cac
   if (all.empty())
     throw InputError("captures.sequences: no frames to capture (autopilot needs trail.enabled = true; "
                      "random needs captures.random_count > 0)");
+  check_rig_mounts(ctx, cache, all);
   return all;
 }
 

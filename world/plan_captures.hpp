@@ -93,8 +93,14 @@ std::vector<PlannedFrame> plan_custom(const WorldContext& ctx, const std::vector
 /// InputError when the walk runs past the trail's end (the config's ranges keep it within 432 000 frames).
 std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx);
 
+/// Marks each trajectory frame of `frames` Clear or, when its camera is inside a solid collision proxy (within
+/// camera.near; the walk is never moved), Unresolvable, and warns once through `warn` with their count and the first.
+void check_walk(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames,
+                const std::function<void(const std::string&)>& warn);
+
 /// Every frame of the run (autopilot settled): the sequences of captures.sequences in order, global indices assigned.
-/// Autopilot is skipped with a warning (via `warn`) when the trail is off; InputError if nothing is left.
+/// Autopilot is skipped with a warning (via `warn`) when the trail is off; InputError if nothing is left or a
+/// camera of the rig is inside a solid object (check_rig_mounts).
 std::vector<PlannedFrame> plan_captures(const WorldContext& ctx, ChunkCache& cache,
                                         const std::vector<PoseEntry>& custom_poses,
                                         const std::function<void(const std::string&)>& warn);

@@ -113,12 +113,23 @@ bool ClearanceProbe::solids_clear(const Vec3d& eye, bool aerial) const {
     camera.geometry = std::make_shared<fcl::Cylinderf>(r, column);
     camera.transform.translation() = fcl::Vector3f(float(eye.x()), float(eye.y()), ground + 0.5f * column);
   }
+  return touched_solid(camera, eye, r + ctx_.max_footprint) == nullptr;
+}
+
+const Vegetation* ClearanceProbe::solid_at(const Vec3d& point, double radius) const {
+  PlacedProxy sphere;
+  sphere.geometry = std::make_shared<fcl::Spheref>(float(radius));
+  sphere.transform.translation() = point.cast<float>();
+  return touched_solid(sphere, point, radius + ctx_.max_footprint);
+}
+
+const Vegetation* ClearanceProbe::touched_solid(const PlacedProxy& shape, const Vec3d& centre, double reach) const {
   for (const Vegetation& v : solids_) {
+    if (std::hypot(v.position.x() - centre.x(), v.position.y() - centre.y()) > reach) continue;
     const auto& proxy = ctx_.library->assets[v.asset].proxy;
-    if (std::hypot(v.position.x() - eye.x(), v.position.y() - eye.y()) > r + ctx_.max_footprint) continue;
-    if (proxies_collide(camera, place_proxy(proxy, v.position, v.yaw, v.scale))) return false;
+    if (proxies_collide(shape, place_proxy(proxy, v.position, v.yaw, v.scale))) return &v;
   }
-  return true;
+  return nullptr;
 }
 
 }  // namespace silva::world

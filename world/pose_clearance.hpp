@@ -12,6 +12,8 @@
 
 namespace silva::world {
 
+struct PlacedProxy;
+
 /// An asset's crown (its tree-canopy parts at full detail) in object space, scale 1: the largest
 /// horizontal distance of a canopy vertex from the object's vertical axis, per height band.
 struct CrownProfile {
@@ -57,10 +59,14 @@ class ClearanceProbe {
   /// True when a walker's column (ground up to `eye`) keeps captures.clearance from every solid
   /// proxy; crowns are walked through (silva view's walk mode).
   bool column_clear(const Vec3d& eye) const;
+  /// The first nearby object whose solid proxy meets a sphere of radius `radius` about `point`, if any.
+  const Vegetation* solid_at(const Vec3d& point, double radius) const;
 
  private:
   /// True when the camera shape (column or sphere) at `eye` keeps captures.clearance from every solid proxy.
   bool solids_clear(const Vec3d& eye, bool aerial) const;
+  /// The first nearby object whose solid proxy meets `shape` (within `reach` horizontally of `centre`), if any.
+  const Vegetation* touched_solid(const PlacedProxy& shape, const Vec3d& centre, double reach) const;
   /// True when a sphere of radius `r` about `eye` meets the crown of object `v`.
   bool near_crown(const Vegetation& v, const Vec3d& eye, double r) const;
 

@@ -9,6 +9,7 @@
 
 #include "core/camera.hpp"
 #include "core/error.hpp"
+#include "core/rig_presets.hpp"
 #include "world/terrain.hpp"
 
 namespace silva::world {
@@ -99,7 +100,7 @@ std::pair<CubicBSpline, std::optional<CubicBSpline>> walk_curves(const WorldCont
 
 std::pair<double, double> camera_height_and_pitch(const Config& c) {
   return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
-                           : std::pair{c.camera.ground_height, 0.0};
+                           : std::pair{rig_camera_height(c), rig_preset(c.rig).pitch_deg};
 }
 
 Trajectory::Trajectory(const WorldContext& ctx) : Trajectory(ctx, walk_curves(ctx)) {}

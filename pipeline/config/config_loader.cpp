@@ -12,6 +12,7 @@
 #include "pipeline/config/lighting_config.hpp"
 #include "core/error.hpp"
 #include "core/input_limits.hpp"
+#include "core/rig_presets.hpp"
 
 namespace silva::pipeline {
 
@@ -128,6 +129,13 @@ void set_from_text(LoadedConfig& loaded, const ConfigKey& key, std::string_view 
   if (key.name == "seed") loaded.seed_given = true;
 }
 
+/// Adds what the chosen rig carries to the outputs: a rig with a LiDAR writes output type "lidar".
+void apply_rig_preset(Config& config) {
+  std::vector<std::string>& types = config.output.types;
+  if (rig_preset(config.rig).lidar && std::find(types.begin(), types.end(), "lidar") == types.end())
+    types.emplace_back("lidar");
+}
+
 }  // namespace
 
 LoadedConfig parse_config_text(std::string_view text, const std::string& source) {
@@ -178,6 +186,7 @@ LoadedConfig load_config(const ConfigSources& sources) {
   for (const std::string& assignment : sources.overrides) apply_override(loaded, assignment);
   if (sources.seed) apply_seed_flag(loaded, *sources.seed);
   if (sources.output_dir) loaded.config.output.dir = *sources.output_dir;
+  apply_rig_preset(loaded.config);
   check_config(loaded);
   return loaded;
 }

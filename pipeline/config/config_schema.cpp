@@ -212,11 +212,15 @@ std::vector<ConfigKey> build_schema() {
        "TUM trajectory file (t x y z qx qy qz qw per line) the walk follows instead of the trail (\"\" = the trail)",
        {}, {}, [](Config& c) -> FieldRef { return &c.trajectory.file; }},
       {"rig.preset", T::String,
-       "cameras of each capture: mono (one) or stereo (a rectified pair, right camera rig.baseline_m along the "
-       "left's x; the left is the mono camera)", {}, {"mono", "stereo"},
-       [](Config& c) -> FieldRef { return &c.rig.preset; }},
-      {"rig.baseline_m", T::Float, "stereo baseline, metres", between(0.01, 2), {},
+       "sensor rig of every capture: mono (one camera), stereo (a rectified pair, right camera rig.baseline_m along "
+       "the left's x; the left is the mono camera), ground_robot (a stereo pair 0.55 m up, adds output type lidar), "
+       "drone (one camera 3 m up, tilted 15 degrees down)",
+       {}, {"mono", "stereo", "ground_robot", "drone"}, [](Config& c) -> FieldRef { return &c.rig.preset; }},
+      {"rig.baseline_m", T::Float, "stereo baseline of two-camera rigs, metres", between(0.01, 2), {},
        [](Config& c) -> FieldRef { return &c.rig.baseline_m; }},
+      {"rig.height_m", T::Float,
+       "ground camera height above the terrain, metres (0: the preset's; mono and stereo use camera.ground_height)",
+       between(0, 1000), {}, [](Config& c) -> FieldRef { return &c.rig.height_m; }},
       {"lidar.preset", T::String,
        "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
        "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},

@@ -13,6 +13,7 @@
 #include "components/phase.hpp"
 #include "components/world_source.hpp"
 #include "core/stopwatch.hpp"
+#include "pipeline/schedule/rig_sensors.hpp"
 #include "systems/aim_camera.hpp"
 #include "systems/cast_lidar.hpp"
 #include "systems/generate_terrain.hpp"
@@ -23,6 +24,7 @@
 #include "systems/store_chunks.hpp"
 #include "systems/stream_chunks.hpp"
 #include "world/chunk_cache.hpp"
+#include "world/world_context.hpp"
 #include "world/chunk_regions.hpp"
 
 namespace silva::pipeline {
@@ -81,6 +83,7 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   queue_cameras(frames);
   CaptureQueue& queue = world_.resource<CaptureQueue>();
   systems::create_output_folders(settings.run_dir, frames, settings.outputs, settings.stereo_baseline_m > 0);
+  mount_rig_sensors(world_, settings, world_.resource<WorldSource>().ctx->config.lidar);
   world_.resource<systems::CaptureSettings>() = std::move(settings);
   systems::DatasetWriter& writer = *world_.resource<std::unique_ptr<systems::DatasetWriter>>();
   writer.stats = {};
@@ -124,6 +127,7 @@ std::shared_ptr<systems::FrameWork> WorldSchedule::render_view(const world::Plan
   CaptureQueue& queue = world_.resource<CaptureQueue>();
   queue = CaptureQueue{};
   queue.cameras.push_back(view_camera_);
+  mount_rig_sensors(world_, settings, world_.resource<WorldSource>().ctx->config.lidar);
   world_.resource<systems::CaptureSettings>() = std::move(settings);
   world_.run_phases(Phase::Stream, Phase::Render);
   return std::move(world_.resource<systems::FrameSlots>().current);

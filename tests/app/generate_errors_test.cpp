@@ -52,6 +52,15 @@ TEST_F(GenerateErrors, BadSequenceName) {
   expect_refused(args({"--set", R"(captures.sequences=["custom"])"}), 2, {"captures.poses_file"});
 }
 
+TEST_F(GenerateErrors, RigCameraInsideAnObjectAndUnknownRig) {
+  // A 2 m baseline puts the right camera of autopilot frame 34 of this world inside a shrub; --overwrite keeps the
+  // earlier run, as the plan fails before anything is written.
+  expect_refused(args({"--overwrite", "--set", "rig.preset=stereo", "--set", "rig.baseline_m=2", "--set",
+                       "captures.autopilot_points=20", "--set", "captures.random_count=20"}),
+                 2, {"rig.baseline_m = 2", "the right camera of autopilot frame 34", "inside a shrub"});
+  expect_refused(args({"--set", "rig.preset=tripod"}), 2, {"rig.preset", "tripod", "ground_robot", "drone"});
+}
+
 TEST_F(GenerateErrors, UnwritableOutputFolder) {
   const std::string file = write("a_file", "not a folder");
   const std::vector<std::string> a = {"generate", "--seed", "1", "--out", file + "/sub"};

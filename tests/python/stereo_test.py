@@ -172,8 +172,30 @@ def check_verify(stereo):
     silva("verify", stereo, "--quiet", expect=VERIFY_FAILED)
 
 
+def check_ground_robot():
+    """The ground_robot preset: a stereo pair 0.55 m above the terrain (the walk's bob off) with a LiDAR sweep per
+    frame, the rig named in the manifest and the card."""
+    run = generate("robot", "--set", "rig.preset=ground_robot", "--set", "trajectory.bob_m=0")
+    seq = os.path.join(run, "trajectory")
+    for folder in ("rgb", "rgb_right", "disparity", "lidar", "camera_right"):
+        assert len(os.listdir(os.path.join(seq, folder))) >= 4, folder
+    manifest = json.load(open(os.path.join(run, "manifest.json")))
+    assert "lidar" in manifest["config"]["output"]["types"] and "lidar" in manifest["sensors"]
+    assert [c["name"] for c in manifest["sensors"]["cameras"]] == ["left", "right"]
+    depth = cv2.imread(os.path.join(seq, "depth_exr", "000000.exr"), cv2.IMREAD_UNCHANGED)
+    camera = json.load(open(os.path.join(seq, "camera", "000000.json")))
+    # The bottom row's centre ray meets the ground ahead: its depth and the ray's fall give the camera's height.
+    k = np.array(camera["K"])
+    h, w = depth.shape[:2]
+    z = float(depth[h - 1, w // 2] if depth.ndim == 2 else depth[h - 1, w // 2, 0])
+    drop = z * ((h - 1 + 0.5) - k[1][2]) / k[1][1]
+    assert 0.45 < drop < 0.65, f"ground_robot camera {drop:.3f} m above the ground ahead, expected about 0.55"
+    assert "`ground_robot`" in open(os.path.join(run, "CARD.md")).read()
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
+    check_ground_robot()
     mono = generate("mono")
     stereo = generate("stereo", "--set", "rig.preset=stereo", "--set", f"rig.baseline_m={BASELINE}",
                       "--set", "trajectory.flow=true")
@@ -183,7 +205,7 @@ def main():
     assert np.allclose(cameras[1]["camera_to_rig"], [[1, 0, 0, BASELINE], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
     rig = json.load(open(os.path.join(stereo, "card.json")))["rig"]
     assert rig == {"preset": "stereo", "baseline_m": BASELINE, "imu_hz": 200.0, "imu_noise": "adis16448"}, rig
-    assert "stereo pair, baseline 0.12 m" in open(os.path.join(stereo, "CARD.md")).read()
+    assert "Stereo baseline 0.12 m" in open(os.path.join(stereo, "CARD.md")).read()
     seq = os.path.join(stereo, "trajectory")
     names = [n[:-5] for n in sorted(os.listdir(os.path.join(seq, "camera")))]
     assert len(names) == 4, names

@@ -12,6 +12,7 @@
 #include "app/commands/card/published_classes.hpp"
 #include "pipeline/config/config_print.hpp"
 #include "core/error.hpp"
+#include "core/rig_presets.hpp"
 #include "io/atomic_file.hpp"
 #include "io/dataset_card.hpp"
 #include "io/export_formats.hpp"
@@ -231,11 +232,13 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
 
 /// CARD.md's sentence on the rig: its cameras and, with the trajectory sequence, the IMU.
 std::string rig_sentence(const nlohmann::json& rig) {
-  std::string text = rig["baseline_m"].is_null()
-                         ? "Rig: one camera."
-                         : io::printf_string("Rig: a rectified stereo pair, baseline %.3g m (the right camera's outputs in "
-                                         "`<type>_right/`, the left camera's disparity in `disparity/`).",
-                                         rig["baseline_m"].get<double>());
+  const std::string name = rig["preset"].get<std::string>();
+  const RigPreset* preset = find_rig_preset(name);
+  std::string text = "Rig: `" + name + "`" + (preset ? ": " + std::string(preset->summary) : std::string()) + ".";
+  if (!rig["baseline_m"].is_null())
+    text += io::printf_string(" Stereo baseline %.3g m (the right camera's outputs in `<type>_right/`, the left camera's "
+                              "disparity in `disparity/`).",
+                              rig["baseline_m"].get<double>());
   if (!rig["imu_hz"].is_null())
     text += io::printf_string(" The trajectory sequence carries an IMU at the left camera, %.4g Hz, noise `%s`.",
                           rig["imu_hz"].get<double>(), rig["imu_noise"].get<std::string>().c_str());

@@ -10,6 +10,7 @@
 #include "app/commands/generate/run_manifest.hpp"
 #include "pipeline/config/run_setup.hpp"
 #include "core/error.hpp"
+#include "core/rig_presets.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/capture_set.hpp"
@@ -67,7 +68,7 @@ std::vector<world::PlannedFrame> frames_to_capture(const std::vector<world::Plan
   std::vector<world::PlannedFrame> frames;
   for (const auto& f : plan) {
     if (request.shard && f.global_index % request.shard->count != request.shard->index) continue;
-    if (frame_complete(f, outputs, request.config.config.rig.stereo_baseline_m() > 0, run_dir)) {
+    if (frame_complete(f, outputs, stereo_baseline_m(request.config.config.rig) > 0, run_dir)) {
       ++skipped;
       continue;
     }
@@ -128,6 +129,17 @@ void export_run_formats(const Config& cfg, const fs::path& run_dir, const Report
 }
 
 /// Prints the run's summary: a JSON object with --json, else one line.
+/// Warns when views of the run were blocked (systems::kBlockedViewShare of their pixels nearer than kBlockedViewDepth).
+void warn_blocked_views(const Reporter& reporter, const systems::CaptureStats& stats) {
+  if (stats.blocked_views == 0) return;
+  char rule[96];
+  std::snprintf(rule, sizeof rule, "at least %.0f %% of their pixels see a surface nearer than %.1f m",
+                100.0 * systems::kBlockedViewShare, double(systems::kBlockedViewDepth));
+  reporter.warn(std::to_string(stats.blocked_views) + " of " + std::to_string(stats.frames_written) +
+                " views are blocked: " + rule + " (the camera inside foliage or against bark; first: " +
+                stats.first_blocked + "); run.json's blocked_views counts them");
+}
+
 void report_summary(const Reporter& reporter, const systems::CaptureStats& stats, const nlohmann::json& record,
                     int64_t seed, const fs::path& run_dir, int skipped, size_t planned, double card_s) {
   const double fps = stats.wall_s > 0 ? stats.frames_written / stats.wall_s : 0.0;
@@ -195,9 +207,10 @@ int run_generate(const GenerateRequest& request, const Reporter& reporter) {
 
   Progress progress(reporter, int(frames.size()), "frames");
   const systems::CaptureStats stats =
-      schedule.capture(frames, {setup.lighting, setup.ontology, outputs, run_dir, setup.lidar, cfg.rig.stereo_baseline_m()},
+      schedule.capture(frames, {setup.lighting, setup.ontology, outputs, run_dir, setup.lidar, stereo_baseline_m(cfg.rig)},
                        [&](int done, int) { progress.update(done); }, [] { return interrupt_requested(); });
   progress.finish();
+  warn_blocked_views(reporter, stats);
 
   nlohmann::json record = make_run_record(stats, request.threads, skipped, plan_s);
   record["poses"] = count_pose_fixes(plan);

@@ -7,6 +7,7 @@
 
 #include "pipeline/console/version.hpp"
 #include "pipeline/config/config_print.hpp"
+#include "core/rig_presets.hpp"
 #include "io/sha256.hpp"
 #include "systems/cast_lidar.hpp"
 #include "app/cli/pipeline_names.hpp"
@@ -29,7 +30,7 @@ nlohmann::json translation_rows(double x) {
 }  // namespace
 
 nlohmann::json camera_descriptions(const RigConfig& rig) {
-  const double baseline = rig.stereo_baseline_m();
+  const double baseline = stereo_baseline_m(rig);
   nlohmann::json cameras = nlohmann::json::array();
   cameras.push_back({{"name", baseline > 0 ? "left" : "camera"},
                      {"folders", "<type>/"},
@@ -145,6 +146,7 @@ nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int 
       {"triangles_submitted", s.triangles_submitted},
       {"triangles_rasterised", s.triangles_rasterised},
       {"pixel_shares", pixel_shares(s)},
+      {"blocked_views", {{"count", s.blocked_views}, {"first", s.first_blocked}}},
       {"timings_s",
        {{"plan", plan_s},
         {"stream", s.stream_s},
