@@ -138,11 +138,14 @@ struct TrajectoryConfig {
   std::string file;                 ///< trajectory.file: a TUM trajectory the walk follows ("" = the trail)
 };
 
-/// [rig]: the sensor rig of every capture (core/rig_presets.hpp).
+/// [rig]: the sensor rig of every capture; rig.preset fills the keys a config leaves out (core/rig_presets.hpp).
 struct RigConfig {
   std::string preset = "mono";  ///< rig.preset: a RigPreset name (mono, stereo, ground_robot, drone)
+  int cameras = 1;              ///< rig.cameras: 1, or 2 for a rectified stereo pair
   double baseline_m = 0.12;     ///< rig.baseline_m: stereo baseline, metres (the right camera along the left's +x)
-  double height_m = 0;          ///< rig.height_m: camera height above the ground, metres (0: the preset's)
+  double height_m = 0;          ///< rig.height_m: ground camera height above the terrain, metres (0: camera.ground_height)
+  double pitch_deg = 0;         ///< rig.pitch_deg: ground camera tilt from level, degrees (negative: down)
+  bool lidar = false;           ///< rig.lidar: the rig carries a LiDAR (adds output type lidar)
 };
 
 /// Every config key, resolved (defaults = thesis defaults).

@@ -36,12 +36,10 @@ const RigPreset& rig_preset(const RigConfig& rig) {
   return p ? *p : kPresets.front();
 }
 
-double stereo_baseline_m(const RigConfig& rig) { return rig_preset(rig).cameras == 2 ? rig.baseline_m : 0.0; }
+double stereo_baseline_m(const RigConfig& rig) { return rig.cameras == 2 ? rig.baseline_m : 0.0; }
 
 double rig_camera_height(const Config& config) {
-  if (config.rig.height_m > 0) return config.rig.height_m;
-  const double preset = rig_preset(config.rig).height_m;
-  return preset > 0 ? preset : config.camera.ground_height;
+  return config.rig.height_m > 0 ? config.rig.height_m : config.camera.ground_height;
 }
 
 }  // namespace silva

@@ -34,8 +34,8 @@ const RigPreset& rig_preset(const RigConfig& rig);
 /// The right camera's baseline, metres: rig.baseline_m for a two-camera rig, 0 for one camera.
 double stereo_baseline_m(const RigConfig& rig);
 
-/// Height of a ground capture's (left) camera above the terrain, metres: rig.height_m when set, else the preset's,
-/// else camera.ground_height.
+/// Height of a ground capture's (left) camera above the terrain, metres: rig.height_m when set, else
+/// camera.ground_height.
 double rig_camera_height(const Config& config);
 
 }  // namespace silva

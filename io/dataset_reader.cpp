@@ -14,7 +14,6 @@
 #include "core/error.hpp"
 #include "core/input_limits.hpp"
 #include "core/png_check.hpp"
-#include "core/rig_presets.hpp"
 #include "io/atomic_file.hpp"
 #include "io/capture_set.hpp"
 #include "io/json_read.hpp"
@@ -163,9 +162,7 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
 
 bool manifest_stereo(const nlohmann::json& manifest) {
   const nlohmann::json& config = manifest.at("config");
-  if (!config.contains("rig")) return false;
-  const RigPreset* preset = find_rig_preset(config.at("rig").value("preset", "mono"));
-  return preset && preset->cameras == 2;
+  return config.contains("rig") && config.at("rig").value("cameras", 1) == 2;
 }
 
 cv::Mat Dataset::depth_metres(const DatasetFrame& f, bool right) const {

@@ -56,7 +56,7 @@ struct Dataset {
   std::vector<uint32_t> lidar_labels(const DatasetFrame& f) const;
 };
 
-/// True when a manifest's config has a two-camera rig.preset (stereo, ground_robot: a pair per capture); false for one camera or a manifest
+/// True when a manifest's config has rig.cameras = 2 (a stereo pair per capture); false for one camera or a manifest
 /// from before the rig existed.
 bool manifest_stereo(const nlohmann::json& manifest);
 

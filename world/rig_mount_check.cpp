@@ -13,10 +13,12 @@ namespace silva::world {
 
 namespace {
 
-/// The keys that place the rig's cameras, e.g. `rig.preset = "stereo", rig.baseline_m = 2` (rig.height_m when set).
+/// The keys that place the rig's cameras, e.g. `rig.preset = "stereo", rig.cameras = 2, rig.baseline_m = 2`
+/// (rig.height_m when set).
 std::string rig_keys(const RigConfig& rig) {
   char text[160];
-  std::snprintf(text, sizeof text, "rig.preset = \"%s\", rig.baseline_m = %g", rig.preset.c_str(), rig.baseline_m);
+  std::snprintf(text, sizeof text, "rig.preset = \"%s\", rig.cameras = %d, rig.baseline_m = %g", rig.preset.c_str(),
+                rig.cameras, rig.baseline_m);
   std::string keys = text;
   if (rig.height_m > 0) {
     std::snprintf(text, sizeof text, ", rig.height_m = %g", rig.height_m);
@@ -45,7 +47,7 @@ void check_camera(const WorldContext& ctx, ChunkCache& cache, const CrownProfile
 
 void check_rig_mounts(const WorldContext& ctx, ChunkCache& cache, const std::vector<PlannedFrame>& frames) {
   const RigConfig& rig = ctx.config.rig;
-  if (rig_preset(rig).name == "mono" && rig.height_m == 0) return;
+  if (rig.cameras == 1 && rig.height_m == 0) return;
   const CrownProfiles crowns(*ctx.library);
   const double baseline = stereo_baseline_m(rig);
   for (const PlannedFrame& f : frames) {

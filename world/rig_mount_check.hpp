@@ -10,8 +10,8 @@ namespace silva::world {
 
 /// Throws InputError (one line: the rig keys, the camera, sequence, frame, position and the object's kind) when a
 /// camera the rig places is inside a solid collision proxy at any of `frames`: the right camera of a stereo pair
-/// at every frame, and with a rig other than mono the left camera of trajectory frames (autopilot and random
-/// poses already keep captures.clearance). Does nothing for the mono rig.
+/// at every frame, and with two cameras or rig.height_m set the left camera of trajectory frames (autopilot and random
+/// poses already keep captures.clearance). Does nothing for one camera at camera.ground_height.
 void check_rig_mounts(const WorldContext& ctx, ChunkCache& cache, const std::vector<PlannedFrame>& frames);
 
 }  // namespace silva::world

@@ -100,7 +100,7 @@ std::pair<CubicBSpline, std::optional<CubicBSpline>> walk_curves(const WorldCont
 
 std::pair<double, double> camera_height_and_pitch(const Config& c) {
   return c.captures.aerial ? std::pair{c.camera.aerial_height, c.camera.aerial_pitch_deg}
-                           : std::pair{rig_camera_height(c), rig_preset(c.rig).pitch_deg};
+                           : std::pair{rig_camera_height(c), c.rig.pitch_deg};
 }
 
 Trajectory::Trajectory(const WorldContext& ctx) : Trajectory(ctx, walk_curves(ctx)) {}

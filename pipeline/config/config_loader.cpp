@@ -54,6 +54,7 @@ void read_table(LoadedConfig& loaded, const toml::table& table, const std::strin
     const std::string where = node_location(loaded.source, node);
     if (const ConfigKey* key = find_key(name)) {
       assign_key(loaded.config, *key, node, where);
+      loaded.keys_set.emplace(key->name);
       if (key->name == "seed") loaded.seed_given = true;
     } else if (name == kPresetsTable) {
       if (!node.is_table()) {
@@ -126,14 +127,22 @@ void set_from_text(LoadedConfig& loaded, const ConfigKey& key, std::string_view 
                    const std::string& where) {
   const toml::table holder = parse_value_text(key, value, where);
   assign_key(loaded.config, key, *holder.get("v"), where);
+  loaded.keys_set.emplace(key.name);
   if (key.name == "seed") loaded.seed_given = true;
 }
 
-/// Adds what the chosen rig carries to the outputs: a rig with a LiDAR writes output type "lidar".
-void apply_rig_preset(Config& config) {
-  std::vector<std::string>& types = config.output.types;
-  if (rig_preset(config.rig).lidar && std::find(types.begin(), types.end(), "lidar") == types.end())
-    types.emplace_back("lidar");
+/// Fills the rig.* keys the config left out from rig.preset's values, and adds output type "lidar" to a rig that
+/// carries a LiDAR.
+void apply_rig_preset(LoadedConfig& loaded) {
+  RigConfig& rig = loaded.config.rig;
+  const RigPreset& preset = rig_preset(rig);
+  const auto unset = [&](const char* key) { return loaded.keys_set.count(key) == 0; };
+  if (unset("rig.cameras")) rig.cameras = preset.cameras;
+  if (unset("rig.height_m")) rig.height_m = preset.height_m;
+  if (unset("rig.pitch_deg")) rig.pitch_deg = preset.pitch_deg;
+  if (unset("rig.lidar")) rig.lidar = preset.lidar;
+  std::vector<std::string>& types = loaded.config.output.types;
+  if (rig.lidar && std::find(types.begin(), types.end(), "lidar") == types.end()) types.emplace_back("lidar");
 }
 
 }  // namespace
@@ -186,7 +195,7 @@ LoadedConfig load_config(const ConfigSources& sources) {
   for (const std::string& assignment : sources.overrides) apply_override(loaded, assignment);
   if (sources.seed) apply_seed_flag(loaded, *sources.seed);
   if (sources.output_dir) loaded.config.output.dir = *sources.output_dir;
-  apply_rig_preset(loaded.config);
+  apply_rig_preset(loaded);
   check_config(loaded);
   return loaded;
 }

@@ -212,15 +212,21 @@ std::vector<ConfigKey> build_schema() {
        "TUM trajectory file (t x y z qx qy qz qw per line) the walk follows instead of the trail (\"\" = the trail)",
        {}, {}, [](Config& c) -> FieldRef { return &c.trajectory.file; }},
       {"rig.preset", T::String,
-       "sensor rig of every capture: mono (one camera), stereo (a rectified pair, right camera rig.baseline_m along "
-       "the left's x; the left is the mono camera), ground_robot (a stereo pair 0.55 m up, adds output type lidar), "
-       "drone (one camera 3 m up, tilted 15 degrees down)",
+       "sensor rig of every capture; fills the rig.* keys left out: mono (one camera), stereo (a rectified pair, the "
+       "left the mono camera), ground_robot (a stereo pair 0.55 m up with a LiDAR), drone (one camera 3 m up, "
+       "tilted 15 degrees down)",
        {}, {"mono", "stereo", "ground_robot", "drone"}, [](Config& c) -> FieldRef { return &c.rig.preset; }},
-      {"rig.baseline_m", T::Float, "stereo baseline of two-camera rigs, metres", between(0.01, 2), {},
-       [](Config& c) -> FieldRef { return &c.rig.baseline_m; }},
+      {"rig.cameras", T::Int, "cameras per capture: 1, or 2 for a rectified stereo pair (the preset's unless set)",
+       between(1, 2), {}, [](Config& c) -> FieldRef { return &c.rig.cameras; }},
+      {"rig.baseline_m", T::Float, "stereo baseline of a two-camera rig, metres (the right camera along the left's x)",
+       between(0.01, 2), {}, [](Config& c) -> FieldRef { return &c.rig.baseline_m; }},
       {"rig.height_m", T::Float,
-       "ground camera height above the terrain, metres (0: the preset's; mono and stereo use camera.ground_height)",
+       "ground camera height above the terrain, metres; 0 = camera.ground_height (the preset's unless set)",
        between(0, 1000), {}, [](Config& c) -> FieldRef { return &c.rig.height_m; }},
+      {"rig.pitch_deg", T::Float, "ground camera tilt from level, degrees, negative = down (the preset's unless set)",
+       between(-89, 89), {}, [](Config& c) -> FieldRef { return &c.rig.pitch_deg; }},
+      {"rig.lidar", T::Bool, "the rig carries a LiDAR: adds output type lidar (the preset's unless set)", {}, {},
+       [](Config& c) -> FieldRef { return &c.rig.lidar; }},
       {"lidar.preset", T::String,
        "LiDAR model of output type lidar: vlp16, hdl32e, hdl64e, os1_64, os1_128 (configs/lidar.toml) or a "
        "[lidar.presets.<name>] of this config", {}, {}, [](Config& c) -> FieldRef { return &c.lidar.preset; }},

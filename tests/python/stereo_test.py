@@ -190,7 +190,8 @@ def check_ground_robot():
     z = float(depth[h - 1, w // 2] if depth.ndim == 2 else depth[h - 1, w // 2, 0])
     drop = z * ((h - 1 + 0.5) - k[1][2]) / k[1][1]
     assert 0.45 < drop < 0.65, f"ground_robot camera {drop:.3f} m above the ground ahead, expected about 0.55"
-    assert "`ground_robot`" in open(os.path.join(run, "CARD.md")).read()
+    card = open(os.path.join(run, "CARD.md")).read()
+    assert "Rig: `ground_robot`, a rectified stereo pair" in card and "0.55 m above the ground, with a LiDAR." in card
 
 
 def main():
@@ -204,8 +205,9 @@ def main():
     assert [c["name"] for c in cameras] == ["left", "right"], cameras
     assert np.allclose(cameras[1]["camera_to_rig"], [[1, 0, 0, BASELINE], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
     rig = json.load(open(os.path.join(stereo, "card.json")))["rig"]
-    assert rig == {"preset": "stereo", "baseline_m": BASELINE, "imu_hz": 200.0, "imu_noise": "adis16448"}, rig
-    assert "Stereo baseline 0.12 m" in open(os.path.join(stereo, "CARD.md")).read()
+    assert rig == {"preset": "stereo", "cameras": 2, "height_m": None, "pitch_deg": 0.0, "lidar": False,
+                   "baseline_m": BASELINE, "imu_hz": 200.0, "imu_noise": "adis16448"}, rig
+    assert "a rectified stereo pair, baseline 0.12 m" in open(os.path.join(stereo, "CARD.md")).read()
     seq = os.path.join(stereo, "trajectory")
     names = [n[:-5] for n in sorted(os.listdir(os.path.join(seq, "camera")))]
     assert len(names) == 4, names

@@ -1,6 +1,6 @@
 // A rig's cameras never sit inside a solid object: the right camera of a stereo pair placed in a real trunk fails
 // the plan with one line naming the camera, frame and object; the same pose with one camera, or with the right
-// camera in the open, passes. Rig presets set the camera height of the trajectory walk.
+// camera in the open, passes. The rig's height and tilt place the trajectory walk's camera.
 #include "world/rig_mount_check.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,6 @@
 #include "world/plan_captures.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/terrain.hpp"
-#include "world/trajectory.hpp"
 #include "world/world_generator.hpp"
 #include "tests/common/test_library.hpp"
 
@@ -45,7 +44,7 @@ std::vector<PlannedFrame> custom_frame(const WorldContext& ctx, const Vec3d& lef
 
 TEST(RigMountCheck, RightCameraInsideATrunkFailsWithOneLineNamingIt) {
   Config cfg = test::small_world_config(7);
-  cfg.rig.preset = "stereo";
+  cfg.rig.cameras = 2;
   cfg.rig.baseline_m = 0.5;
   const WorldContext ctx = make_world_context(cfg, library());
   const std::optional<Vec3d> trunk = trunk_point(ctx);
@@ -57,7 +56,7 @@ TEST(RigMountCheck, RightCameraInsideATrunkFailsWithOneLineNamingIt) {
     FAIL() << "a right camera inside a trunk passed";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("rig.baseline_m = 0.5"), std::string::npos) << what;
+    EXPECT_NE(what.find("rig.cameras = 2, rig.baseline_m = 0.5"), std::string::npos) << what;
     EXPECT_NE(what.find("the right camera of custom frame 0"), std::string::npos) << what;
     EXPECT_NE(what.find("_tree"), std::string::npos) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
@@ -73,7 +72,7 @@ TEST(RigMountCheck, OneCameraOrARightCameraInTheOpenPasses) {
   // Mono: the same left camera has no mount to check.
   EXPECT_NO_THROW(check_rig_mounts(mono_ctx, cache, custom_frame(mono_ctx, *trunk - Vec3d(0.5, 0, 0))));
   // Stereo with the left camera in the trunk (a user's custom pose, not a mount) and the right one in the open.
-  cfg.rig.preset = "stereo";
+  cfg.rig.cameras = 2;
   cfg.rig.baseline_m = 2.0;
   const WorldContext ctx = make_world_context(cfg, library());
   const std::vector<PlannedFrame> frames = custom_frame(ctx, *trunk);
@@ -88,25 +87,22 @@ TEST(RigMountCheck, OneCameraOrARightCameraInTheOpenPasses) {
   EXPECT_NO_THROW(check_rig_mounts(ctx, cache, frames));
 }
 
-TEST(RigPresets, GroundRobotAndDroneWalkAtTheirHeightAndTilt) {
-  for (const auto& [preset, height, pitch] : {std::tuple{"ground_robot", 0.55, 0.0}, std::tuple{"drone", 3.0, -15.0},
-                                              std::tuple{"mono", 1.5, 0.0}}) {
+TEST(RigHeight, TrajectoryCamerasWalkAtTheRigsHeightAndTilt) {
+  for (const auto& [height, pitch, expected] : {std::tuple{0.55, 0.0, 0.55}, std::tuple{3.0, -15.0, 3.0},
+                                                std::tuple{0.0, 0.0, 1.5}}) {  // 0: camera.ground_height
     Config cfg = test::small_world_config(7);
-    cfg.rig.preset = preset;
+    cfg.rig.height_m = height;
+    cfg.rig.pitch_deg = pitch;
     cfg.trajectory.duration_s = 1;
     cfg.trajectory.bob_m = 0;
     cfg.trajectory.sway_deg = 0;
     const WorldContext ctx = make_world_context(cfg, library());
     for (const PlannedFrame& f : plan_trajectory(ctx)) {
       const Vec3d p = f.camera.position();
-      EXPECT_NEAR(p.z() - terrain_height(ctx.terrain, p.x(), p.y()), height, 1e-3) << preset << " frame " << f.frame;
-      EXPECT_NEAR(f.pitch_deg, pitch, 1e-9) << preset;
+      EXPECT_NEAR(p.z() - terrain_height(ctx.terrain, p.x(), p.y()), expected, 1e-3) << height << " frame " << f.frame;
+      EXPECT_NEAR(f.pitch_deg, pitch, 1e-9) << height;
     }
   }
-  Config cfg = test::small_world_config(7);
-  cfg.rig.preset = "ground_robot";
-  cfg.rig.height_m = 0.8;  // a user's own height wins over the preset's
-  EXPECT_DOUBLE_EQ(camera_height_and_pitch(cfg).first, 0.8);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // the charts card_*.png beside it. Every number is recounted from the label, depth and camera files, so the card is the
 // same for a single run, a resumed run and merged shards.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -12,7 +13,6 @@
 #include "app/commands/card/published_classes.hpp"
 #include "pipeline/config/config_print.hpp"
 #include "core/error.hpp"
-#include "core/rig_presets.hpp"
 #include "io/atomic_file.hpp"
 #include "io/dataset_card.hpp"
 #include "io/export_formats.hpp"
@@ -59,14 +59,19 @@ std::string percent(double share) {
 }
 
 /// The class table: one row per class id that a role uses, in id order.
-/// card.json's "rig": the stereo baseline (null: one camera) and, with the trajectory sequence, the IMU's rate and
-/// noise model (else null), from the manifest's config.
+/// card.json's "rig": its preset, cameras, height (null: camera.ground_height), tilt, LiDAR, the stereo baseline (null:
+/// one camera) and, with the trajectory sequence, the IMU's rate and noise model (else null), from the manifest's config.
 nlohmann::json rig_summary(const nlohmann::json& manifest) {
   const nlohmann::json& config = manifest.at("config");
   const nlohmann::json rig = config.value("rig", nlohmann::json::object());
   const bool stereo = io::manifest_stereo(manifest);
   const bool imu = manifest.at("frames").contains("trajectory") && config.contains("trajectory");
+  const double height = rig.value("height_m", 0.0);
   return {{"preset", rig.value("preset", "mono")},
+          {"cameras", stereo ? 2 : 1},
+          {"height_m", height > 0 ? nlohmann::json(height) : nlohmann::json()},
+          {"pitch_deg", rig.value("pitch_deg", 0.0)},
+          {"lidar", rig.value("lidar", false)},
           {"baseline_m", stereo ? rig.at("baseline_m") : nlohmann::json()},
           {"imu_hz", imu ? config.at("trajectory").at("imu_hz") : nlohmann::json()},
           {"imu_noise", imu ? config.at("trajectory").at("imu_noise") : nlohmann::json()}};
@@ -232,13 +237,17 @@ void write_charts(const fs::path& dir, const nlohmann::json& card, const io::Car
 
 /// CARD.md's sentence on the rig: its cameras and, with the trajectory sequence, the IMU.
 std::string rig_sentence(const nlohmann::json& rig) {
-  const std::string name = rig["preset"].get<std::string>();
-  const RigPreset* preset = find_rig_preset(name);
-  std::string text = "Rig: `" + name + "`" + (preset ? ": " + std::string(preset->summary) : std::string()) + ".";
-  if (!rig["baseline_m"].is_null())
-    text += io::printf_string(" Stereo baseline %.3g m (the right camera's outputs in `<type>_right/`, the left camera's "
-                              "disparity in `disparity/`).",
-                              rig["baseline_m"].get<double>());
+  std::string text = "Rig: `" + rig["preset"].get<std::string>() + "`, ";
+  text += rig["baseline_m"].is_null()
+              ? std::string("one camera")
+              : io::printf_string("a rectified stereo pair, baseline %.3g m (the right camera's outputs in `<type>_right/`, "
+                                  "the left camera's disparity in `disparity/`),",
+                                  rig["baseline_m"].get<double>());
+  text += rig["height_m"].is_null() ? std::string(" at camera.ground_height")
+                                    : io::printf_string(" %.3g m above the ground", rig["height_m"].get<double>());
+  if (const double pitch = rig["pitch_deg"].get<double>(); pitch != 0)
+    text += io::printf_string(", tilted %.3g° %s", std::abs(pitch), pitch < 0 ? "down" : "up");
+  text += rig["lidar"].get<bool>() ? ", with a LiDAR." : ".";
   if (!rig["imu_hz"].is_null())
     text += io::printf_string(" The trajectory sequence carries an IMU at the left camera, %.4g Hz, noise `%s`.",
                           rig["imu_hz"].get<double>(), rig["imu_noise"].get<std::string>().c_str());
