@@ -162,7 +162,9 @@ cv::Mat Dataset::image(const DatasetFrame& f, const std::string& folder, int typ
 
 bool manifest_stereo(const nlohmann::json& manifest) {
   const nlohmann::json& config = manifest.at("config");
-  return config.contains("rig") && config.at("rig").value("cameras", 1) == 2;
+  if (!config.contains("rig") || !config.at("rig").is_object()) return false;
+  const nlohmann::json& rig = config.at("rig");
+  return rig.contains("cameras") && rig.at("cameras").is_number_integer() && rig.at("cameras").get<int64_t>() == 2;
 }
 
 cv::Mat Dataset::depth_metres(const DatasetFrame& f, bool right) const {

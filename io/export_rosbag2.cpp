@@ -12,6 +12,8 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/camera_json.hpp"
+#include "io/capture_set.hpp"
 #include "io/export_formats.hpp"
 #include "io/json_read.hpp"
 #include "io/lidar_files.hpp"
@@ -27,7 +29,7 @@ namespace {
 
 /// Frame ids of the bag's tf tree.
 const std::string kMapFrame = "map", kBaseFrame = "base_link", kCameraFrame = "camera_optical_frame",
-                  kLidarFrame = "lidar";
+                  kRightCameraFrame = "camera_right_optical_frame", kLidarFrame = "lidar";
 
 /// base_link (x forward, y left, z up) from the camera's optical axes (x right, y down, z forward).
 Mat4d base_from_optical() {
@@ -110,6 +112,29 @@ std::span<const uint8_t> pixels(const cv::Mat& m) {
   return {m.data, m.total() * m.elemSize()};
 }
 
+/// The stereo baseline of a two-camera dataset (metres, from its first frame's right camera file), 0 for one camera.
+double stereo_baseline(const Dataset& d) {
+  if (!manifest_stereo(d.manifest) || d.frames.empty()) return 0.0;
+  const CameraRecord right = read_camera_json(d.file(d.frames.front(), camera_folder("camera", true), "json"));
+  if (!right.stereo) throw InputError(d.file(d.frames.front(), camera_folder("camera", true), "json").string() +
+                                      ": a right camera file without its \"stereo\" record");
+  return right.stereo->baseline_m;
+}
+
+/// Writes the right camera's camera info and RGB (when the dataset has rgb) of frame `f` at time t.
+template <class Put>
+void put_right_camera(const Dataset& d, const DatasetFrame& f, uint64_t t, double baseline_m, const Put& put) {
+  const RosHeader at_right{t, kRightCameraFrame};
+  const CameraRecord cam = read_camera_json(d.file(f, camera_folder("camera", true), "json"));
+  put("/camera/right/camera_info", t, encode_camera_info(at_right, cam.camera, baseline_m));
+  if (!d.has("rgb")) return;
+  cv::Mat image = d.image(f, camera_folder("rgb", true), CV_8UC3);
+  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+  put("/camera/right/image_raw", t,
+      encode_image(at_right, uint32_t(d.width), uint32_t(d.height), "rgb8", 3 * uint32_t(d.width), pixels(image)));
+}
+
+
 /// rosbag2's metadata.yaml for one MCAP file.
 std::string metadata_yaml(const std::string& file, const std::vector<Topic>& topics,
                           const std::map<uint16_t, uint64_t>& counts, uint64_t start_ns, uint64_t end_ns) {
@@ -179,6 +204,10 @@ std::vector<Topic> bag_topics(const Dataset& d, bool imu) {
   if (d.has("instance")) topics.push_back({"/camera/instance/image_raw", RosType::Image, ""});
   if (d.has("lidar")) topics.push_back({"/lidar/points", RosType::PointCloud2, ""});
   if (imu) topics.push_back({"/imu", RosType::Imu, ""});
+  if (manifest_stereo(d.manifest)) {
+    topics.push_back({"/camera/right/camera_info", RosType::CameraInfo, ""});
+    if (d.has("rgb")) topics.push_back({"/camera/right/image_raw", RosType::Image, ""});
+  }
   return topics;
 }
 
@@ -215,6 +244,12 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
   size_t next_imu = 0;
   std::vector<RosTransform> mounts = {{kBaseFrame, kCameraFrame, base_from_camera}};
   if (lidar) mounts.push_back({kBaseFrame, kLidarFrame, base_from_camera * beams.camera_from_lidar});
+  const double baseline = stereo_baseline(d);
+  if (baseline > 0) {
+    Mat4d camera_from_right = Mat4d::Identity();
+    camera_from_right(0, 3) = baseline;
+    mounts.push_back({kBaseFrame, kRightCameraFrame, base_from_camera * camera_from_right});
+  }
   put("/tf_static", start, encode_tf(start, mounts));
   uint64_t last = start;
   for (const size_t i : frames) {
@@ -252,6 +287,7 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
           encode_image(at_camera, w, h, "mono16", 2 * w,
                        pixels(d.image(f, "instance", CV_16UC1))));
     if (lidar) put("/lidar/points", t, encode_point_cloud({t, kLidarFrame}, scan_points(d, f, beams)));
+    if (baseline > 0) put_right_camera(d, f, t, baseline, put);
     last = t;
     ++done;
     if (options.progress) options.progress(done, d.frames.size());

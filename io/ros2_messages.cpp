@@ -127,7 +127,7 @@ std::vector<uint8_t> encode_image(const RosHeader& header, uint32_t width, uint3
   return w.take();
 }
 
-std::vector<uint8_t> encode_camera_info(const RosHeader& header, const Camera& c) {
+std::vector<uint8_t> encode_camera_info(const RosHeader& header, const Camera& c, double baseline_m) {
   CdrWriter w;
   put_header(w, header);
   w.u32(uint32_t(c.height));
@@ -138,7 +138,8 @@ std::vector<uint8_t> encode_camera_info(const RosHeader& header, const Camera& c
   const double cx = c.cx - 0.5, cy = c.cy - 0.5;
   const std::array<double, 9> k{c.fx, 0, cx, 0, c.fy, cy, 0, 0, 1};
   const std::array<double, 9> r{1, 0, 0, 0, 1, 0, 0, 0, 1};
-  const std::array<double, 12> p{c.fx, 0, cx, 0, 0, c.fy, cy, 0, 0, 0, 1, 0};
+  const double tx = baseline_m > 0 ? -c.fx * baseline_m : 0.0;  // never -0.0: one camera keeps P = [K | 0]
+  const std::array<double, 12> p{c.fx, 0, cx, tx, 0, c.fy, cy, 0, 0, 0, 1, 0};
   w.f64_array(k, true);
   w.f64_array(r, true);
   w.f64_array(p, true);

@@ -50,9 +50,10 @@ inline constexpr uint32_t kRosPointStep = 32;
 std::vector<uint8_t> encode_image(const RosHeader& header, uint32_t width, uint32_t height, const std::string& encoding,
                                   uint32_t step, std::span<const uint8_t> data);
 
-/// sensor_msgs/CameraInfo of a Silva pinhole camera: plumb_bob with zero distortion, R = I, P = [K | 0]; the
-/// principal point moved by -0.5 px (ROS puts pixel centres at integer coordinates, Silva at +0.5).
-std::vector<uint8_t> encode_camera_info(const RosHeader& header, const Camera& camera);
+/// sensor_msgs/CameraInfo of a Silva pinhole camera: plumb_bob with zero distortion, R = I, P = [K | t] with
+/// t = (-fx · baseline_m, 0, 0) (a rectified pair's right camera; 0 for the left or only one); the principal point
+/// moved by -0.5 px (ROS puts pixel centres at integer coordinates, Silva at +0.5).
+std::vector<uint8_t> encode_camera_info(const RosHeader& header, const Camera& camera, double baseline_m = 0.0);
 
 /// sensor_msgs/PointCloud2 of one unorganised scan (height 1), fields x y z intensity time ring label instance.
 std::vector<uint8_t> encode_point_cloud(const RosHeader& header, std::span<const RosPoint> points);

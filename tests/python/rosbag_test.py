@@ -18,13 +18,13 @@ import time
 os.environ.setdefault("OPENCV_IO_ENABLE_OPENEXR", "1")
 import cv2  # noqa: E402
 import numpy as np  # noqa: E402
-from silva_cli import damaged_copy, edit_json, runner, small_dataset  # noqa: E402
+from silva_cli import damaged_copy, edit_json, node_reader_missing, runner, small_dataset  # noqa: E402
+from silva_cli import read_bag as bag_reader  # noqa: E402
 import yaml  # noqa: E402
 
 SILVA, WORK, TEST = sys.argv[1], sys.argv[2], sys.argv[3]
 SEED = 5151
 DATASET = os.path.join(WORK, "dataset", f"{SEED:010d}")
-NODE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "node")
 PERIOD_NS = 100_000_000
 
 
@@ -36,12 +36,10 @@ def generate():
 
 
 def read_bag(path):
-    if shutil.which("node") is None or not os.path.isdir(os.path.join(NODE_DIR, "node_modules", "@mcap")):
+    if node_reader_missing():
         print("node or tests/node/node_modules missing (scripts/install-deps.sh --test installs them)")
         sys.exit(77)
-    result = subprocess.run(["node", os.path.join(NODE_DIR, "read_bag.mjs"), path], capture_output=True, text=True)
-    assert result.returncode == 0, f"{path}: the independent reader failed\n{result.stderr}"
-    return json.loads(result.stdout)
+    return bag_reader(path)
 
 
 def sha(data):

@@ -43,3 +43,18 @@ def edit_json(path, change):
     change(document)
     with open(path, "w") as f:
         json.dump(document, f)
+
+
+NODE_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "node")
+
+
+def node_reader_missing():
+    """True when node or the npm packages of tests/node are missing (scripts/install-deps.sh --test installs them)."""
+    return shutil.which("node") is None or not os.path.isdir(os.path.join(NODE_DIR, "node_modules", "@mcap"))
+
+
+def read_bag(path):
+    """The MCAP file `path` as tests/node/read_bag.mjs reads it (an independent reader), parsed from its JSON."""
+    result = subprocess.run(["node", os.path.join(NODE_DIR, "read_bag.mjs"), path], capture_output=True, text=True)
+    assert result.returncode == 0, f"{path}: the independent reader failed\n{result.stderr}"
+    return json.loads(result.stdout)

@@ -8,6 +8,7 @@ writes a deleted right-camera file back with the same bytes.
 Usage: stereo_test.py SILVA WORKDIR
 """
 import filecmp
+import hashlib
 import json
 import os
 import shutil
@@ -16,7 +17,7 @@ import sys
 import cv2
 import numpy as np
 import yaml
-from silva_cli import runner
+from silva_cli import node_reader_missing, read_bag, runner
 
 SILVA, WORK = sys.argv[1], sys.argv[2]
 SEED = 5150
@@ -172,6 +173,31 @@ def check_verify(stereo):
     silva("verify", stereo, "--quiet", expect=VERIFY_FAILED)
 
 
+def check_rosbag(stereo):
+    """The ROS 2 bag of a stereo run, read by the independent MCAP reader: the right camera's info (P's Tx =
+    -fx · B) and images beside the left's, its mount in /tf_static the baseline along the left's x."""
+    if node_reader_missing():
+        print("stereo: node or tests/node/node_modules missing, the ROS 2 bag check is skipped")
+        return
+    out = os.path.join(WORK, "bag")
+    silva("export", stereo, "--format", "rosbag2", "--out", out, "--quiet")
+    b = read_bag(os.path.join(out, "rosbag2", "trajectory", "trajectory_0.mcap"))
+    seq = os.path.join(stereo, "trajectory")
+    frames = sorted(os.listdir(os.path.join(seq, "rgb_right")))
+    right = [m for m in b["messages"] if m["topic"] == "/camera/right/image_raw"]
+    info = [m for m in b["messages"] if m["topic"] == "/camera/right/camera_info"]
+    assert len(right) == len(info) == len(frames), (len(right), len(info), len(frames))
+    for m, name in zip(right, frames):
+        rgb = cv2.cvtColor(cv2.imread(os.path.join(seq, "rgb_right", name)), cv2.COLOR_BGR2RGB)
+        assert m["frame_id"] == "camera_right_optical_frame" and m["sha256"] == hashlib.sha256(rgb.tobytes()).hexdigest()
+    fx = json.load(open(os.path.join(seq, "camera_right", frames[0][:-4] + ".json")))["K"][0][0]
+    assert np.isclose(np.array(info[0]["p"]).reshape(3, 4)[0, 3], -fx * BASELINE, atol=1e-9), info[0]["p"]
+    static = [m for m in b["messages"] if m["topic"] == "/tf_static"][0]
+    mount = {t["child"]: t for t in static["transforms"]}["camera_right_optical_frame"]
+    # base_link is x forward, y left: the right camera's centre sits B to the right, at y = -B.
+    assert np.allclose(mount["t"], [0, -BASELINE, 0], atol=1e-12), mount
+
+
 def check_ground_robot():
     """The ground_robot preset: a stereo pair 0.55 m above the terrain (the walk's bob off) with a LiDAR sweep per
     frame, the rig named in the manifest and the card."""
@@ -215,6 +241,7 @@ def main():
     check_euroc(stereo)
     check_tartanair(stereo)
     check_kitti_groundtruth(seq)
+    check_rosbag(stereo)
     check_resume(stereo)
     check_verify(stereo)
     print(f"stereo ok: {len(names)} frames, label agreement through the disparity {min(agreement):.4f}")

@@ -58,7 +58,6 @@ std::string percent(double share) {
   return buf;
 }
 
-/// The class table: one row per class id that a role uses, in id order.
 /// card.json's "rig": its preset, cameras, height (null: camera.ground_height), tilt, LiDAR, the stereo baseline (null:
 /// one camera) and, with the trajectory sequence, the IMU's rate and noise model (else null), from the manifest's config.
 nlohmann::json rig_summary(const nlohmann::json& manifest) {
@@ -66,17 +65,22 @@ nlohmann::json rig_summary(const nlohmann::json& manifest) {
   const nlohmann::json rig = config.value("rig", nlohmann::json::object());
   const bool stereo = io::manifest_stereo(manifest);
   const bool imu = manifest.at("frames").contains("trajectory") && config.contains("trajectory");
-  const double height = rig.value("height_m", 0.0);
-  return {{"preset", rig.value("preset", "mono")},
+  // A key of another type (a hand-edited manifest) reads as its default.
+  const auto number = [&](const char* key) {
+    return rig.contains(key) && rig[key].is_number() ? rig[key].get<double>() : 0.0;
+  };
+  const double height = number("height_m");
+  return {{"preset", rig.contains("preset") && rig["preset"].is_string() ? rig["preset"] : nlohmann::json("mono")},
           {"cameras", stereo ? 2 : 1},
           {"height_m", height > 0 ? nlohmann::json(height) : nlohmann::json()},
-          {"pitch_deg", rig.value("pitch_deg", 0.0)},
-          {"lidar", rig.value("lidar", false)},
-          {"baseline_m", stereo ? rig.at("baseline_m") : nlohmann::json()},
+          {"pitch_deg", number("pitch_deg")},
+          {"lidar", rig.contains("lidar") && rig["lidar"].is_boolean() && rig["lidar"].get<bool>()},
+          {"baseline_m", stereo && number("baseline_m") > 0 ? rig["baseline_m"] : nlohmann::json()},
           {"imu_hz", imu ? config.at("trajectory").at("imu_hz") : nlohmann::json()},
           {"imu_noise", imu ? config.at("trajectory").at("imu_noise") : nlohmann::json()}};
 }
 
+/// The class table: one row per class id that a role uses, in id order.
 nlohmann::json class_rows(const io::Dataset& d, const io::CardCounts& c) {
   nlohmann::json rows = nlohmann::json::array();
   for (int id = 0; id < 256; ++id) {
