@@ -121,6 +121,20 @@ double stereo_baseline(const Dataset& d) {
   return right.stereo->baseline_m;
 }
 
+/// The rig's fixed transforms from base_link: the camera, the LiDAR (given its beams) and a stereo pair's right camera
+/// (baseline_m > 0) along the camera's x.
+std::vector<RosTransform> static_mounts(const LidarBeams* lidar, double baseline_m) {
+  const Mat4d base_from_camera = base_from_optical();
+  std::vector<RosTransform> mounts = {{kBaseFrame, kCameraFrame, base_from_camera}};
+  if (lidar) mounts.push_back({kBaseFrame, kLidarFrame, base_from_camera * lidar->camera_from_lidar});
+  if (baseline_m > 0) {
+    Mat4d camera_from_right = Mat4d::Identity();
+    camera_from_right(0, 3) = baseline_m;
+    mounts.push_back({kBaseFrame, kRightCameraFrame, base_from_camera * camera_from_right});
+  }
+  return mounts;
+}
+
 /// Writes the right camera's camera info and RGB (when the dataset has rgb) of frame `f` at time t.
 template <class Put>
 void put_right_camera(const Dataset& d, const DatasetFrame& f, uint64_t t, double baseline_m, const Put& put) {
@@ -242,15 +256,8 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
   };
   const uint64_t start = std::min(stamp(d.frames[frames.front()]), imu.first_stamp());
   size_t next_imu = 0;
-  std::vector<RosTransform> mounts = {{kBaseFrame, kCameraFrame, base_from_camera}};
-  if (lidar) mounts.push_back({kBaseFrame, kLidarFrame, base_from_camera * beams.camera_from_lidar});
   const double baseline = stereo_baseline(d);
-  if (baseline > 0) {
-    Mat4d camera_from_right = Mat4d::Identity();
-    camera_from_right(0, 3) = baseline;
-    mounts.push_back({kBaseFrame, kRightCameraFrame, base_from_camera * camera_from_right});
-  }
-  put("/tf_static", start, encode_tf(start, mounts));
+  put("/tf_static", start, encode_tf(start, static_mounts(lidar ? &beams : nullptr, baseline)));
   uint64_t last = start;
   for (const size_t i : frames) {
     const DatasetFrame& f = d.frames[i];
