@@ -29,7 +29,7 @@ bool parse_view_mode(std::string_view name, ViewMode& mode);
 /// A free camera pose (CONTRACT.md angles; roll is always 0 in the view).
 struct ViewPose {
   Vec3d position = Vec3d::Zero();  ///< World position; z ignored when `walk`.
-  bool walk = false;               ///< Camera held camera.ground_height above the terrain.
+  bool walk = false;               ///< Camera held the rig's camera height above the terrain (world::plan_custom).
   /// Walking: where the camera comes from; a step from a clear spot into one closer than
   /// captures.clearance to a trunk or other solid is refused (the camera stays there).
   std::optional<Eigen::Vector2d> from;
