@@ -2,7 +2,6 @@
 /// @file The built-in sensor rigs of rig.preset (CONTRACT.md "Sensor rigs"): cameras, their height and tilt,
 /// and whether the rig carries a LiDAR.
 #include <span>
-#include <string>
 #include <string_view>
 
 #include "core/config.hpp"
@@ -16,17 +15,10 @@ struct RigPreset {
   double height_m = 0;         ///< Camera height above the ground, metres (0: camera.ground_height)
   double pitch_deg = 0;        ///< Camera tilt from level, degrees (negative: looking down)
   bool lidar = false;          ///< The rig carries a LiDAR (output type "lidar" is added)
-  std::string_view summary;    ///< One line for --help, config print and the dataset card
 };
 
-/// Every built-in rig, in the order help texts list them.
+/// Every built-in rig, in the order help texts list them (the config schema's allowed rig.preset values).
 std::span<const RigPreset> rig_presets();
-
-/// The preset called `name`, or nullptr.
-const RigPreset* find_rig_preset(std::string_view name);
-
-/// The preset names joined by ", " (for error messages).
-std::string rig_preset_names();
 
 /// The preset `rig` names (mono when the name is not a preset: the config checks refuse those).
 const RigPreset& rig_preset(const RigConfig& rig);

@@ -135,17 +135,22 @@ std::vector<RosTransform> static_mounts(const LidarBeams* lidar, double baseline
   return mounts;
 }
 
-/// Writes the right camera's camera info and RGB (when the dataset has rgb) of frame `f` at time t.
-template <class Put>
-void put_right_camera(const Dataset& d, const DatasetFrame& f, uint64_t t, double baseline_m, const Put& put) {
-  const RosHeader at_right{t, kRightCameraFrame};
-  const CameraRecord cam = read_camera_json(d.file(f, camera_folder("camera", true), "json"));
-  put("/camera/right/camera_info", t, encode_camera_info(at_right, cam.camera, baseline_m));
-  if (!d.has("rgb")) return;
-  cv::Mat image = d.image(f, camera_folder("rgb", true), CV_8UC3);
+/// The frame's image of RGB folder `folder` as a sensor_msgs/Image (rgb8) with `header`.
+std::vector<uint8_t> rgb8_message(const Dataset& d, const DatasetFrame& f, const std::string& folder,
+                                  const RosHeader& header) {
+  cv::Mat image = d.image(f, folder, CV_8UC3);
   cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
-  put("/camera/right/image_raw", t,
-      encode_image(at_right, uint32_t(d.width), uint32_t(d.height), "rgb8", 3 * uint32_t(d.width), pixels(image)));
+  return encode_image(header, uint32_t(d.width), uint32_t(d.height), "rgb8", 3 * uint32_t(d.width), pixels(image));
+}
+
+/// Writes the right camera's camera info (`camera`: the pair's shared intrinsics) and RGB (when the dataset has rgb)
+/// of frame `f` at time t.
+template <class Put>
+void put_right_camera(const Dataset& d, const DatasetFrame& f, const Camera& camera, uint64_t t, double baseline_m,
+                      const Put& put) {
+  const RosHeader at_right{t, kRightCameraFrame};
+  put("/camera/right/camera_info", t, encode_camera_info(at_right, camera, baseline_m));
+  if (d.has("rgb")) put("/camera/right/image_raw", t, rgb8_message(d, f, camera_folder("rgb", true), at_right));
 }
 
 
@@ -274,11 +279,7 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
       throw InputError(d.file(f, "camera", "json").string() + ": " + std::to_string(cam.camera.width) + "x" +
                        std::to_string(cam.camera.height) + ", not the run's output.resolution");
     const uint32_t w = uint32_t(d.width), h = uint32_t(d.height);
-    if (rgb) {
-      cv::Mat image = d.image(f, "rgb", CV_8UC3);
-      cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
-      put("/camera/image_raw", t, encode_image(at_camera, w, h, "rgb8", 3 * w, pixels(image)));
-    }
+    if (rgb) put("/camera/image_raw", t, rgb8_message(d, f, "rgb", at_camera));
     if (depth) {
       const cv::Mat m = d.depth_metres(f, false);
       if (m.cols != int(w) || m.rows != int(h))
@@ -294,7 +295,7 @@ void write_bag(const Dataset& d, const std::string& sequence, const std::vector<
           encode_image(at_camera, w, h, "mono16", 2 * w,
                        pixels(d.image(f, "instance", CV_16UC1))));
     if (lidar) put("/lidar/points", t, encode_point_cloud({t, kLidarFrame}, scan_points(d, f, beams)));
-    if (baseline > 0) put_right_camera(d, f, t, baseline, put);
+    if (baseline > 0) put_right_camera(d, f, cam.camera, t, baseline, put);
     last = t;
     ++done;
     if (options.progress) options.progress(done, d.frames.size());

@@ -55,7 +55,7 @@ struct FrameWork {
   std::array<uint64_t, kRoleCount> pixels_by_role{};  ///< Pixels of each class (role) in the view.
   io::CardCounts card;               ///< The dataset card's label counts of the frame (from the planes).
   uint64_t bare_soil_pixels = 0;     ///< Forest-floor pixels that look like bare soil (0 without rgb).
-  uint64_t near_pixels = 0;          ///< Pixels whose surface is nearer than kBlockedViewDepth (a blocked view's)
+  uint64_t near_pixels = 0;          ///< Left camera: pixels whose surface is nearer than kBlockedViewDepth
   std::vector<LidarPoint> lidar;     ///< The frame's LiDAR sweep (empty when lidar is not selected).
   double lidar_s = 0;                ///< Wall time of the sweep (scene update and cast).
   /// The stereo pair's right view (rendered when CaptureSettings::stereo_baseline_m > 0, else left as it was): this

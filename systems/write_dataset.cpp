@@ -92,8 +92,9 @@ void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings
   }
   work.pixels_by_role.fill(0);
   for (const Role r : work.gbuffer.role) ++work.pixels_by_role[uint8_t(r)];
-  work.near_pixels = uint64_t(std::count_if(work.gbuffer.depth.begin(), work.gbuffer.depth.end(),
-                                            [](float d) { return d > 0.0f && d < kBlockedViewDepth; }));
+  if (!f.right)  // blocked views are counted for the left camera
+    work.near_pixels = uint64_t(std::count_if(work.gbuffer.depth.begin(), work.gbuffer.depth.end(),
+                                              [](float d) { return d > 0.0f && d < kBlockedViewDepth; }));
   const Stopwatch clock;
   const io::LabelPlanes planes = label_planes(work.gbuffer);
   work.files = io::encode_capture_set(planes, work.rgb, settings.ontology, settings.outputs, f.frame, f.right);

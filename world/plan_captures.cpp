@@ -7,7 +7,6 @@
 #include "core/error.hpp"
 #include "core/rig_presets.hpp"
 #include "core/rng.hpp"
-#include "world/chunk_regions.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/rig_mount_check.hpp"
 #include "world/terrain.hpp"
@@ -76,8 +75,7 @@ const std::vector<Eigen::Vector2d>& spiral_offsets() {
 int clear_spiral_spot(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, double x,
                       double y, double height) {
   const double radius = kSpiralRings * kPoseSearchStep, half = 0.5 * ctx.config.world.extent;
-  const auto chunks = cache.require(ctx, chunks_in_disc(x, y, ClearanceProbe::reach(ctx, radius), ctx.chunk_size()));
-  const ClearanceProbe probe(ctx, crowns, chunks, x, y, radius);
+  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, x, y, radius);
   const auto& offsets = spiral_offsets();
   for (size_t k = 0; k < offsets.size(); ++k) {
     const double cx = x + offsets[k].x(), cy = y + offsets[k].y();
@@ -114,14 +112,8 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
   for (size_t first = 0; first + yaws <= frames.size(); first += yaws) {
     const double s0 = *frames[first].trail_s;
     const Vec3d eye = frames[first].camera.position();
-    const double here = ClearanceProbe::reach(ctx, 0.0);
-    if (ClearanceProbe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), here, ctx.chunk_size())), eye.x(),
-                       eye.y(), 0.0)
-            .clear(eye, aerial))
-      continue;
-    const double reach = ClearanceProbe::reach(ctx, kTrailSearchReach);
-    const ClearanceProbe probe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), reach, ctx.chunk_size())),
-                               eye.x(), eye.y(), kTrailSearchReach);
+    if (ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), 0.0).clear(eye, aerial)) continue;
+    const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), kTrailSearchReach);
     std::optional<double> found;
     for (int step = 1; step <= int(kTrailSearchReach / kPoseSearchStep) && !found; ++step)
       for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
@@ -234,9 +226,7 @@ void check_walk(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedF
   int blocked = 0;
   for (PlannedFrame& f : frames) {
     const Vec3d eye = f.camera.position();
-    const double here = ClearanceProbe::reach(ctx, 0.0);
-    const ClearanceProbe probe(ctx, crowns, cache.require(ctx, chunks_in_disc(eye.x(), eye.y(), here, ctx.chunk_size())),
-                               eye.x(), eye.y(), 0.0);
+    const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), 0.0);
     f.pose_fix = probe.solid_at(eye, ctx.config.camera.near) ? PoseFix::Unresolvable : PoseFix::Clear;
     if (f.pose_fix == PoseFix::Clear) continue;
     if (!first) first = &f;

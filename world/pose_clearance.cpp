@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "world/chunk_regions.hpp"
 #include "world/class_mix.hpp"
 #include "world/collision_proxy.hpp"
 #include "world/terrain.hpp"
@@ -72,6 +73,12 @@ ClearanceProbe::ClearanceProbe(const WorldContext& ctx, const CrownProfiles& cro
       const AssetKind kind = ctx.library->assets[v.asset].kind;
       if (kind == AssetKind::ConiferTree || kind == AssetKind::BroadleafTree) crowned_.push_back(v);
     }
+}
+
+ClearanceProbe ClearanceProbe::around(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns,
+                                      double x, double y, double radius) {
+  return ClearanceProbe(ctx, crowns, cache.require(ctx, chunks_in_disc(x, y, reach(ctx, radius), ctx.chunk_size())), x,
+                        y, radius);
 }
 
 bool ClearanceProbe::near_crown(const Vegetation& v, const Vec3d& eye, double r) const {

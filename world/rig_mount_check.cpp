@@ -5,7 +5,6 @@
 
 #include "core/error.hpp"
 #include "core/rig_presets.hpp"
-#include "world/chunk_regions.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/stereo_rig.hpp"
 
@@ -31,8 +30,7 @@ std::string rig_keys(const RigConfig& rig) {
 void check_camera(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, const PlannedFrame& f,
                   const Camera& camera, const char* which) {
   const Vec3d p = camera.position();
-  const auto chunks = cache.require(ctx, chunks_in_disc(p.x(), p.y(), ClearanceProbe::reach(ctx, 0.0), ctx.chunk_size()));
-  const ClearanceProbe probe(ctx, crowns, chunks, p.x(), p.y(), 0.0);
+  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, p.x(), p.y(), 0.0);
   const Vegetation* inside = probe.solid_at(p, ctx.config.camera.near);
   if (!inside) return;
   char where[160];

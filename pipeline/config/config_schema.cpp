@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rig_presets.hpp"
 #include "pipeline/config/edit_distance.hpp"
 #include "pipeline/config/number_format.hpp"
 
@@ -15,6 +16,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 /// The bounds shorthand used in the table below.
 NumericRange between(double min, double max) { return {min, max, false}; }
 NumericRange above(double min, double max = kInf) { return {min, max, true}; }
+
+/// The allowed values of rig.preset: the built-in rigs' names.
+std::vector<std::string_view> rig_preset_names() {
+  std::vector<std::string_view> names;
+  for (const RigPreset& p : rig_presets()) names.push_back(p.name);
+  return names;
+}
 
 std::vector<ConfigKey> build_schema() {
   const std::vector<std::string_view> output_types = {
@@ -215,7 +223,7 @@ std::vector<ConfigKey> build_schema() {
        "sensor rig of every capture; fills the rig.* keys left out: mono (one camera), stereo (a rectified pair, the "
        "left the mono camera), ground_robot (a stereo pair 0.55 m up with a LiDAR), drone (one camera 3 m up, "
        "tilted 15 degrees down)",
-       {}, {"mono", "stereo", "ground_robot", "drone"}, [](Config& c) -> FieldRef { return &c.rig.preset; }},
+       {}, rig_preset_names(), [](Config& c) -> FieldRef { return &c.rig.preset; }},
       {"rig.cameras", T::Int, "cameras per capture: 1, or 2 for a rectified stereo pair (the preset's unless set)",
        between(1, 2), {}, [](Config& c) -> FieldRef { return &c.rig.cameras; }},
       {"rig.baseline_m", T::Float, "stereo baseline of a two-camera rig, metres (the right camera along the left's x)",

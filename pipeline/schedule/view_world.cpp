@@ -16,7 +16,6 @@
 #include "io/run_folder.hpp"
 #include "io/run_lock.hpp"
 #include "systems/write_dataset.hpp"
-#include "world/chunk_regions.hpp"
 #include "world/terrain.hpp"
 
 namespace silva::pipeline {
@@ -101,9 +100,8 @@ ViewWorld::ViewWorld(LoadedConfig loaded) : loaded_(std::move(loaded)), setup_(m
 
 bool ViewWorld::blocked(const Vec3d& eye) {
   const world::WorldContext& ctx = setup_.world;
-  const auto chunks = schedule_->ecs().resource<world::ChunkCache>().require(
-      ctx, world::chunks_in_disc(eye.x(), eye.y(), world::ClearanceProbe::reach(ctx, 0.0), ctx.chunk_size()));
-  return !world::ClearanceProbe(ctx, *crowns_, chunks, eye.x(), eye.y(), 0.0).column_clear(eye);
+  world::ChunkCache& cache = schedule_->ecs().resource<world::ChunkCache>();
+  return !world::ClearanceProbe::around(ctx, cache, *crowns_, eye.x(), eye.y(), 0.0).column_clear(eye);
 }
 
 world::PlannedFrame ViewWorld::view_frame(const ViewPose& pose, int width, int height) const {

@@ -24,8 +24,8 @@
 #include "systems/store_chunks.hpp"
 #include "systems/stream_chunks.hpp"
 #include "world/chunk_cache.hpp"
-#include "world/world_context.hpp"
 #include "world/chunk_regions.hpp"
+#include "world/world_context.hpp"
 
 namespace silva::pipeline {
 

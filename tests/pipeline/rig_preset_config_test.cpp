@@ -25,25 +25,24 @@ long count_type(const Config& c, const std::string& type) {
 }
 
 TEST(RigPresetConfig, PresetsFillTheirValues) {
-  const Config mono = loaded({});
-  EXPECT_EQ(mono.rig.cameras, 1);
-  EXPECT_EQ(mono.rig.height_m, 0.0);
-  EXPECT_FALSE(mono.rig.lidar);
-  EXPECT_EQ(count_type(mono, "lidar"), 0);
-  const Config stereo = loaded({"rig.preset=stereo"});
-  EXPECT_EQ(stereo.rig.cameras, 2);
-  EXPECT_EQ(stereo.rig.height_m, 0.0);
-  const Config robot = loaded({"rig.preset=ground_robot"});
-  EXPECT_EQ(robot.rig.cameras, 2);
-  EXPECT_DOUBLE_EQ(robot.rig.height_m, 0.55);
-  EXPECT_DOUBLE_EQ(robot.rig.pitch_deg, 0.0);
-  EXPECT_TRUE(robot.rig.lidar);
-  EXPECT_EQ(count_type(robot, "lidar"), 1);
-  const Config drone = loaded({"rig.preset=drone"});
-  EXPECT_EQ(drone.rig.cameras, 1);
-  EXPECT_DOUBLE_EQ(drone.rig.height_m, 3.0);
-  EXPECT_DOUBLE_EQ(drone.rig.pitch_deg, -15.0);
-  EXPECT_FALSE(drone.rig.lidar);
+  struct Expected {
+    const char* preset;
+    int cameras;
+    double height_m, pitch_deg;
+    bool lidar;
+  };
+  for (const Expected& e : {Expected{"mono", 1, 0.0, 0.0, false}, Expected{"stereo", 2, 0.0, 0.0, false},
+                            Expected{"ground_robot", 2, 0.55, 0.0, true}, Expected{"drone", 1, 3.0, -15.0, false}}) {
+    const Config c = loaded({std::string("rig.preset=") + e.preset});
+    EXPECT_EQ(c.rig.cameras, e.cameras) << e.preset;
+    EXPECT_DOUBLE_EQ(c.rig.height_m, e.height_m) << e.preset;
+    EXPECT_DOUBLE_EQ(c.rig.pitch_deg, e.pitch_deg) << e.preset;
+    EXPECT_EQ(c.rig.lidar, e.lidar) << e.preset;
+    EXPECT_EQ(count_type(c, "lidar"), e.lidar ? 1 : 0) << e.preset;  // a rig with a LiDAR adds it once
+  }
+  const Config defaults = loaded({});  // no rig.preset given: mono
+  EXPECT_EQ(defaults.rig.cameras, 1);
+  EXPECT_EQ(count_type(defaults, "lidar"), 0);
 }
 
 TEST(RigPresetConfig, KeysTheUserGaveWin) {
