@@ -16,8 +16,14 @@ struct SensorNoise {
   double full_well_e = 10000;  ///< Electrons at full scale at gain 1.
   double read_noise_e = 3;     ///< Read noise std-dev, electrons.
   double gain = 2;             ///< Analog gain: full scale is full_well_e / gain electrons.
+  double max_gain = 32;        ///< The auto gain's ceiling (exposed_camera_model).
+  double aperture_ev = 8.643856189774724;  ///< log2(f_number^2 / shutter_s) (f/2, 1/100 s): the darkest EV100 gain 1 exposes.
   bool operator==(const SensorNoise&) const = default;
 };
+
+/// Colour lost per stop of gain above the base gain: the chroma noise reduction of a camera at high
+/// gain keeps 1 / (1 + kChromaLossPerStop x stops) of each pixel's colour.
+inline constexpr double kChromaLossPerStop = 0.2;
 
 /// Thin-lens depth of field, focused at `focus_distance` metres along the optical axis.
 struct DepthOfField {
@@ -42,8 +48,14 @@ struct CameraModel {
   double chromatic_aberration = 0;             ///< Lateral CA: R sampled at radius (1 - k), B at (1 + k).
   std::optional<DepthOfField> depth_of_field;  ///< Thin-lens blur, or a pinhole.
   std::optional<ExposureMotion> motion;        ///< Camera motion during the exposure, or a still camera.
+  double chroma = 1;                           ///< Share of each pixel's colour kept (1 = all; exposed_camera_model).
   bool operator==(const CameraModel&) const = default;
 };
+
+/// `model` exposed for a scene of `ev100`: the sensor's gain raised to what the exposure needs,
+/// 2^(aperture_ev - ev100), between its base gain and max_gain (dark scenes get noisier), and the colour
+/// the camera keeps at that gain (chroma, kChromaLossPerStop per stop above the base gain).
+CameraModel exposed_camera_model(const CameraModel& model, double ev100);
 
 /// The model `[camera]` configures for `camera`'s image (its focal length in pixels gives the
 /// lens's in millimetres); `motion` is left empty, as it belongs to each frame.

@@ -64,7 +64,8 @@ struct CameraConfig {
   bool noise = true;              ///< camera.noise: shot + read sensor noise on RGB
   double full_well_e = 10000;     ///< camera.full_well_e (electrons at full scale, gain 1)
   double read_noise_e = 3;        ///< camera.read_noise_e (electrons, std-dev)
-  double gain = 2;                ///< camera.gain (analog gain, linear)
+  double gain = 2;                ///< camera.gain (analog gain, linear, in bright light)
+  double max_gain = 32;           ///< camera.max_gain (the auto gain's ceiling in dark scenes)
   double vignetting = 0.25;       ///< camera.vignetting (strength of the cos^4 falloff)
   double chromatic_aberration = 0;  ///< camera.chromatic_aberration (lateral, fraction of the radius)
   bool depth_of_field = false;    ///< camera.depth_of_field: thin-lens blur

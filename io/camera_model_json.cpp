@@ -35,9 +35,11 @@ nlohmann::ordered_json camera_model_json(const CameraModel& model) {
   nlohmann::ordered_json j;
   j["noise"] = nullptr;
   if (const auto& n = model.noise)
-    j["noise"] = {{"full_well_e", n->full_well_e}, {"read_noise_e", n->read_noise_e}, {"gain", n->gain}};
+    j["noise"] = {{"full_well_e", n->full_well_e}, {"read_noise_e", n->read_noise_e}, {"gain", n->gain},
+                  {"max_gain", n->max_gain}};
   j["vignetting"] = model.vignetting;
   j["chromatic_aberration"] = model.chromatic_aberration;
+  j["chroma"] = model.chroma;
   j["depth_of_field"] = nullptr;
   if (const auto& d = model.depth_of_field)
     j["depth_of_field"] = {
@@ -54,11 +56,14 @@ CameraModel parse_camera_model(const nlohmann::json& obj, const std::string& whe
   const nlohmann::json& j = json_member(obj, "camera_model", where);
   if (!j.is_object()) throw InputError(where + ": 'camera_model' must be an object");
   CameraModel m;
-  if (const nlohmann::json* n = optional_object(j, "noise", where))
-    m.noise = SensorNoise{json_number(*n, "full_well_e", where), json_number(*n, "read_noise_e", where),
-                          json_number(*n, "gain", where)};
+  if (const nlohmann::json* n = optional_object(j, "noise", where)) {
+    const double gain = json_number(*n, "gain", where);
+    m.noise = SensorNoise{json_number(*n, "full_well_e", where), json_number(*n, "read_noise_e", where), gain,
+                          n->contains("max_gain") ? json_number(*n, "max_gain", where) : gain};
+  }
   m.vignetting = json_number(j, "vignetting", where);
   m.chromatic_aberration = json_number(j, "chromatic_aberration", where);
+  if (j.contains("chroma")) m.chroma = json_number(j, "chroma", where);
   if (const nlohmann::json* d = optional_object(j, "depth_of_field", where))
     m.depth_of_field = DepthOfField{json_number(*d, "f_number", where), json_number(*d, "focus_distance", where),
                                     json_number(*d, "focal_length_mm", where)};

@@ -1,5 +1,6 @@
 #include "render/camera_encode.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace silva::render {
@@ -22,7 +23,14 @@ RowEncoder::RowEncoder(const Camera& camera, const CameraModel& model, float exp
       exposure_(exposure),
       vignetting_(float(model.vignetting)),
       white_balance_(white_balance),
-      noise_(model.noise.has_value()) {
+      noise_(model.noise.has_value()),
+      chroma_(float(model.chroma)) {
+  // Noise kept as colour: chroma of each channel's own draw, the rest the draws' shared (luma) part,
+  // (z_r + z_g + z_b) / sqrt(3), scaled back to unit variance per channel.
+  const double own = std::sqrt(model.chroma), shared = std::sqrt(1.0 - std::min(model.chroma, 1.0));
+  const double norm = 1.0 / std::sqrt(1.0 + 2.0 * own * shared / std::sqrt(3.0));
+  own_weight_ = float(own * norm);
+  shared_weight_ = float(shared / std::sqrt(3.0) * norm);
   row_.exposure = exposure;
   if (noise_) {
     row_.noise = noise_scale(*model.noise);
@@ -44,9 +52,8 @@ void RowEncoder::encode(int v, const float* radiance, uint8_t* out) {
     const RngStreamBits stream(seed_, key_, uint64_t(Purpose::SensorNoise));
     for (size_t u = 0; u < w; ++u) {
       const Vec3f z = sensor_normals(stream, first + u);
-      normals_[3 * u] = z.x();
-      normals_[3 * u + 1] = z.y();
-      normals_[3 * u + 2] = z.z();
+      const float shared = chroma_ < 1.0f ? (z.x() + z.y() + z.z()) * shared_weight_ : 0.0f;
+      for (int c = 0; c < 3; ++c) normals_[3 * u + size_t(c)] = z[c] * own_weight_ + shared;
     }
   }
   if (row_.scales) {
@@ -55,6 +62,14 @@ void RowEncoder::encode(int v, const float* radiance, uint8_t* out) {
       const float scale = vignetting_ > 0.0f ? exposure_ * vignetting_factor(ray_x_[u], y, vignetting_) : exposure_;
       for (int k = 0; k < 3; ++k) scales_[3 * u + size_t(k)] = scale * white_balance_[k];
     }
+  }
+  if (chroma_ < 1.0f) {
+    desaturated_.resize(3 * w);
+    for (size_t k = 0; k < 3 * w; k += 3) {
+      const float y = 0.2126f * radiance[k] + 0.7152f * radiance[k + 1] + 0.0722f * radiance[k + 2];
+      for (size_t c = 0; c < 3; ++c) desaturated_[k + c] = y + chroma_ * (radiance[k + c] - y);
+    }
+    radiance = desaturated_.data();
   }
   encode_srgb8_row(radiance, w, row_, out);
 }

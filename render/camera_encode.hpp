@@ -20,8 +20,8 @@ float vignetting_factor(float x, float y, float strength);
 /// Encodes rows of one frame; holds its own per-row buffers, so use one per thread.
 class RowEncoder {
  public:
-  /// For `camera`'s frame under `model`; noise drawn from the stream (seed, key); each channel's
-  /// exposure times its `white_balance` gain.
+  /// For `camera`'s frame under `model` (its gain and chroma as exposed_camera_model gives them); noise drawn
+  /// from the stream (seed, key); each channel's exposure times its `white_balance` gain.
   RowEncoder(const Camera& camera, const CameraModel& model, float exposure, uint64_t seed, uint64_t key,
              const Vec3f& white_balance = Vec3f::Ones());
   /// Encodes row v's camera.width linear radiances (3 floats each) into camera.width * 3 bytes.
@@ -33,6 +33,9 @@ class RowEncoder {
   float exposure_, vignetting_;
   Vec3f white_balance_;
   bool noise_;
+  float chroma_;                   ///< Share of each pixel's colour kept (CameraModel::chroma).
+  float own_weight_ = 1, shared_weight_ = 0;  ///< Noise draw weights: a channel's own, the three's sum.
+  std::vector<float> desaturated_; ///< The row's radiance with chroma_ of its colour, when chroma_ < 1.
   RowExposure row_;
   std::vector<float> ray_x_;  ///< Per column: the ray's x at z = 1 (vignetting only).
   std::vector<float> scales_, normals_;

@@ -44,7 +44,7 @@ void EncodeRowImpl(const float* radiance, size_t count, const RowExposure& row, 
     x = hn::Max(x, zero);
     const auto num = hn::Mul(x, hn::Add(hn::Mul(hn::Set(d, 2.51f), x), hn::Set(d, 0.03f)));
     const auto den = hn::Add(hn::Mul(x, hn::Add(hn::Mul(hn::Set(d, 2.43f), x), hn::Set(d, 0.59f))), hn::Set(d, 0.14f));
-    const auto c = hn::Max(hn::Min(hn::Div(num, den), one), zero);
+    const auto c = hn::Max(hn::Min(hn::Mul(hn::Div(num, den), hn::Set(d, kToneGain)), one), zero);
     const auto scaled = hn::Add(hn::Mul(c, hn::Set(d, float(kSrgbTableSize - 1))), hn::Set(d, 0.5f));
     hn::Store(hn::ConvertTo(di, scaled), di, index);
     for (size_t k = 0; k < n; ++k) out[first + k] = table[index[k]];

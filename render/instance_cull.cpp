@@ -114,7 +114,7 @@ void mesh_spheres(const Scene& scene, std::vector<BoundingSphere>& out, bool sha
 }
 
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, InstanceSelection& out, bool shadow_casters) {
+                      bool lod, InstanceSelection& out, bool shadow_casters, double min_radius) {
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const uint32_t mesh = scene.instances[i].mesh;
     if (mesh >= scene.meshes.size())
@@ -139,7 +139,7 @@ void select_instances(const Scene& scene, const ViewProjection& view, const std:
       const double scale = std::sqrt(m.leftCols<3>().colwise().squaredNorm().maxCoeff());
       const double r_world = s.radius * scale;
       const Vec3d c = view.world_to_view.topLeftCorner<3, 3>() * world_center + view.world_to_view.block<3, 1>(0, 3);
-      if (s.radius < 0.0 || !c.allFinite() || frustum.outside(c, r_world)) {
+      if (s.radius < 0.0 || r_world < min_radius || !c.allFinite() || frustum.outside(c, r_world)) {
         out.lod[i] = kCulled;
         out.inside[i] = 0;
         out.nearness[i] = 0.0;

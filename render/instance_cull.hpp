@@ -33,8 +33,9 @@ struct InstanceSelection {
 
 /// Culls and picks LODs of every instance by its bounding sphere, and orders the drawn ones
 /// nearest first. With `shadow_casters`, a mesh's shadow caster (level lods.size()) replaces the
-/// picked level when it has fewer triangles. Throws InputError for an instance naming a missing mesh.
+/// picked level when it has fewer triangles. Instances whose bounding sphere's radius is below
+/// `min_radius` (metres) are culled. Throws InputError for an instance naming a missing mesh.
 void select_instances(const Scene& scene, const ViewProjection& view, const std::vector<BoundingSphere>& spheres,
-                      bool lod, InstanceSelection& out, bool shadow_casters = false);
+                      bool lod, InstanceSelection& out, bool shadow_casters = false, double min_radius = 0.0);
 
 }  // namespace silva::render

@@ -65,7 +65,7 @@ LightingPreset preset_dusk() {
   p.fog_height_falloff = 0.1f;
   p.fog_sun_scatter = 0.9f;
   p.cloud_cover = 0.45f;
-  p.ev100 = 13.5f;
+  p.ev100 = 12.5f;
   return p;
 }
 

@@ -79,7 +79,7 @@ float tonemap_aces(float x) {
   x = std::max(x, 0.0f);
   const float num = x * (2.51f * x + 0.03f);
   const float den = x * (2.43f * x + 0.59f) + 0.14f;
-  return std::min(num / den, 1.0f);
+  return std::min(num / den * kToneGain, 1.0f);
 }
 
 uint8_t linear_to_srgb8(float x) {

@@ -13,7 +13,14 @@ namespace silva::render {
 /// Linear scale of an exposure in stops: 2^ev.
 float exposure_scale(float exposure_ev);
 
-/// Narkowicz's ACES filmic fit, x (linear, >= 0) -> display-linear [0, 1].
+/// Exposed signal at which the camera's image is white: the sky and sunlit leaves above it clip, as a
+/// camera metering a forest lets them.
+inline constexpr float kToneWhite = 1.0f;
+/// 1 / the ACES fit at kToneWhite: the gain that maps kToneWhite to display white.
+inline constexpr float kToneGain = float(1.0 / (2.54 / 3.16));
+
+/// The camera's tone curve, x (exposed linear signal, >= 0) -> display-linear [0, 1]: Narkowicz's ACES
+/// filmic fit times kToneGain, clipped at 1 (from x = kToneWhite on).
 float tonemap_aces(float x);
 
 /// Entries of the display-linear -> sRGB8 table.

@@ -52,7 +52,7 @@ struct Renderer::Impl {
     check_pass(view, options);
     const bool cull_back = !shadow && options.backface_cull;
     mesh_spheres(scene, spheres, shadow);
-    select_instances(scene, view, spheres, options.lod, state.instances, shadow);
+    select_instances(scene, view, spheres, options.lod, state.instances, shadow, options.min_radius);
     const uint64_t submitted = build_draw_items(scene, state.instances, items);
     const TileGrid grid = TileGrid::make(view.width, view.height, options.tile_size);
     const SetupView setup(view);

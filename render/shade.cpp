@@ -93,6 +93,7 @@ struct RowTerms {
   std::vector<int32_t> ao_missing;  ///< Scratch: pixels without a reusable AO sample.
   std::vector<float> ao_evaluated;  ///< Scratch: their AO.
   std::vector<float> sun_visible;   ///< Shadow-map visibility per pixel (1 without shadows).
+  std::vector<float> canopy;        ///< Share of the sky light the canopy takes per pixel (0 without a map).
   std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only procedural Ground pixels set).
   std::vector<Vec2f> ground_slope;  ///< Ground relief gradient per pixel (the same pixels).
   std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
@@ -114,7 +115,8 @@ struct RowTerms {
 
   /// Sized for rows of `width` pixels.
   explicit RowTerms(int width)
-      : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), ground(size_t(width)),
+      : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), canopy(size_t(width), 0.0f),
+        ground(size_t(width)),
         ground_slope(size_t(width)), view_dir(size_t(width)), foliage(size_t(width)) {}
 
   /// Evaluates the terms of row v.
@@ -125,6 +127,7 @@ struct RowTerms {
     half_ao.row(g, in.camera, v, ao_missing, ao_evaluated, ao);
     if (in.shadow && sky.sun_illuminance.maxCoeff() > 0.0f)
       shadow_visibility_row(*in.shadow, &g.position[row], &g.normal[row], w, sky.to_sun, sun_visible.data());
+    if (in.canopy) canopy_share_row(*in.canopy, &g.position[row], w, canopy.data());
     ground_at.clear();
     gather_p.clear();
     gather_n.clear();
@@ -187,7 +190,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const float roughness = look.active() ? look.roughness(response.roughness, n) : response.roughness;
   return {albedo,       n,           s.normal,         view_dir,
           roughness,    response.f0, response.translucency, row.ao[size_t(u)],
-          row.sun_visible[size_t(u)], row.fog_amount[size_t(u)]};
+          row.sun_visible[size_t(u)], row.fog_amount[size_t(u)], row.canopy[size_t(u)]};
 }
 
 }  // namespace
@@ -208,6 +211,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   float ev100 = in.ev100 ? *in.ev100 : lit.ev100 - in.exposure_compensation_ev;
   float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
+  CameraModel exposed_model = exposed_camera_model(in.model, ev100);
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
@@ -217,7 +221,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
     RowTerms terms(g.width);
     std::optional<RowEncoder> encoder;  // encodes each row as it is shaded, unless the optics need the frame
-    if (!whole_frame) encoder.emplace(in.camera, in.model, exposure, in.seed, key, in.white_balance);
+    if (!whole_frame) encoder.emplace(in.camera, exposed_model, exposure, in.seed, key, in.white_balance);
     std::vector<Vec3f> row_radiance(whole_frame ? 0 : size_t(g.width));
     for (int v = rows.begin(); v < rows.end(); ++v) {
       const size_t row = size_t(v) * size_t(g.width);
@@ -253,10 +257,11 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     if (metered) {
       ev100 = ev100_for_luminance(log_average_luminance(frame)) - in.exposure_compensation_ev;
       exposure = exposure_multiplier(ev100);
+      exposed_model = exposed_camera_model(in.model, ev100);
     }
     if (needs_whole_frame(in.model)) apply_optics(frame, scratch, g.depth, in.camera, in.model);
     tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-      RowEncoder encoder(in.camera, in.model, exposure, in.seed, key, in.white_balance);
+      RowEncoder encoder(in.camera, exposed_model, exposure, in.seed, key, in.white_balance);
       for (int v = rows.begin(); v < rows.end(); ++v) {
         const size_t row = size_t(v) * size_t(g.width);
         encoder.encode(v, frame.rgb[row].data(), &rgb_out[row * 3]);

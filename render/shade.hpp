@@ -7,6 +7,7 @@
 
 #include "core/camera.hpp"
 #include "core/camera_model.hpp"
+#include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
 #include "render/lighting.hpp"
 
@@ -29,6 +30,7 @@ struct ShadeInputs {
   /// Expose with this EV100 (compensation included), neither metered nor the preset's: a stereo pair's right
   /// camera takes its left's, as a rig with synchronised exposure does.
   std::optional<float> ev100 = std::nullopt;
+  const CanopyMap* canopy = nullptr;  ///< The canopy over the view (sky light under trees), or none.
 };
 
 /// What shading saw, for the run's statistics.
@@ -40,7 +42,7 @@ struct ShadeCounts {
 /// Shades every pixel with the preset's weather applied (with_weather): procedural material albedo
 /// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
 /// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
-/// across pixels of similar depth), through exponential height fog; sky pixels get the Preetham /
+/// across pixels of similar depth; under the canopy map's trees partly replaced by their green scattered light), through exponential height fog; sky pixels get the Preetham /
 /// overcast sky; falling rain or snow over the radiance. Then the camera model: motion blur, depth
 /// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
 /// exposure (the preset's, or metered from the whole linear frame with auto_exposure; minus the

@@ -22,12 +22,19 @@ Vec3f MirroredSky::along(const Vec3f& dir) const {
   return (level + ((z > 0.0f ? up : down) - level) * std::abs(z)) * forest_sky_view(z);
 }
 
+SurfaceLighting::SurfaceLighting(const Sky& sky, const HeightFog& fog, const LightingPreset& preset)
+    : sky(sky), fog(fog), mirror(sky), ao_strength(preset.ao_strength),
+      foliage_translucency(preset.foliage_translucency),
+      canopy_light((sky.ambient(Vec3f(0, 0, 1)) + sky.sun_illuminance * std::max(sky.to_sun.z(), 0.0f))
+                       .cwiseProduct(kCanopyScatter)) {}
+
 Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s) {
   const Sky& sky = lighting.sky;
   const Vec3f& n = s.normal;
   const Vec3f to_eye = -s.view_dir;
   const float ambient_visible = 1.0f - lighting.ao_strength * (1.0f - s.ao);
-  Vec3f diffuse = sky.ambient(n) * ambient_visible;
+  const float open = 1.0f - s.canopy;
+  Vec3f diffuse = (sky.ambient(n) * open + lighting.canopy_light * s.canopy) * ambient_visible;
   Vec3f out = Vec3f::Zero();
   if (sky.sun_illuminance.maxCoeff() > 0.0f && s.sun_visible > 0.0f) {
     const Vec3f sun = sky.sun_illuminance * s.sun_visible;
@@ -47,7 +54,7 @@ Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s) {
   if (s.roughness < kSharpReflection && mirrored_dir.z() > 0.0f)
     mirrored += (sky.diffuse(mirrored_dir) * forest_sky_view(mirrored_dir.z()) - mirrored) *
                 (1.0f - s.roughness / kSharpReflection);
-  out += mirrored * (ambient_specular_weight(n.dot(to_eye), s.roughness, s.f0) * ambient_visible);
+  out += mirrored * (ambient_specular_weight(n.dot(to_eye), s.roughness, s.f0) * ambient_visible * open);
   return lighting.fog.apply(out, s.fog, s.view_dir);
 }
 

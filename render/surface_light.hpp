@@ -22,6 +22,10 @@ inline constexpr float kSharpReflection = 0.3f;
 /// yellow-green and absorbs blue.
 inline const Vec3f kTransmissionTint(1.3f, 1.15f, 0.55f);
 
+/// Light under a closed canopy per unit of the open ground's irradiance (sun and sky): what the leaves
+/// scatter and let through, green (a few per cent, as measured under broadleaf and spruce canopies).
+inline const Vec3f kCanopyScatter(0.02f, 0.035f, 0.01f);
+
 /// The sky and ground light a rough surface mirrors, by the mirrored direction's z only: the
 /// ambient fit's irradiance / π straight up, level and straight down, blended linearly in z and
 /// times forest_sky_view (per frame; a few multiplies per pixel instead of the full fit).
@@ -42,11 +46,10 @@ struct SurfaceLighting {
   MirroredSky mirror;          ///< The sky rough surfaces mirror.
   float ao_strength;           ///< How much screen-space AO darkens the ambient light (LightingPreset).
   float foliage_translucency;  ///< How much sun back-lit foliage lets through (LightingPreset).
+  Vec3f canopy_light;          ///< Irradiance the canopy scatters down in place of the sky light it takes.
 
   /// The lighting of `sky` and `fog` with the occlusion and translucency strengths of `preset`.
-  SurfaceLighting(const Sky& sky, const HeightFog& fog, const LightingPreset& preset)
-      : sky(sky), fog(fog), mirror(sky), ao_strength(preset.ao_strength),
-        foliage_translucency(preset.foliage_translucency) {}
+  SurfaceLighting(const Sky& sky, const HeightFog& fog, const LightingPreset& preset);
 };
 
 /// The material inputs of one visible surface pixel.
@@ -61,11 +64,12 @@ struct SurfaceSample {
   float ao = 1;           ///< Screen-space ambient visibility in [0, 1].
   float sun_visible = 1;  ///< Shadow-map visibility of the sun in [0, 1].
   float fog = 0;          ///< Height-fog amount along the view (HeightFog::amounts).
+  float canopy = 0;       ///< Share of the sky light the canopy above takes (canopy_share_row).
 };
 
 /// Linear radiance (kcd/m²) leaving a surface pixel towards the camera, fog included: the albedo x
-/// (sun x n·l + ambient SH irradiance x occlusion) / π, a GGX highlight of the sun, the sky mirrored
-/// by the surface's Fresnel weight (looked up along the reflection below kSharpReflection), and the
+/// (sun x n·l + (ambient SH irradiance x (1 - canopy) + canopy light x canopy) x occlusion) / π, a GGX highlight of the sun, the sky mirrored
+/// by the surface's Fresnel weight x (1 - canopy) (looked up along the reflection below kSharpReflection), and the
 /// sun shining through back-lit thin foliage.
 Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s);
 
@@ -76,7 +80,7 @@ class SurfaceBatch {
   /// The stored fields, in storage order.
   enum Field : size_t {
     kAlbedoR, kAlbedoG, kAlbedoB, kNormalX, kNormalY, kNormalZ, kCardX, kCardY, kCardZ,
-    kViewX, kViewY, kViewZ, kRoughness, kF0, kTranslucency, kAo, kSunVisible, kFog, kFieldCount
+    kViewX, kViewY, kViewZ, kRoughness, kF0, kTranslucency, kAo, kSunVisible, kFog, kCanopy, kFieldCount
   };
   /// Samples per padding unit: the float lanes of the widest SIMD vector (AVX-512).
   static constexpr size_t kPadding = 16;
@@ -88,7 +92,7 @@ class SurfaceBatch {
                                        s.normal.y(),      s.normal.z(),      s.card_normal.x(), s.card_normal.y(),
                                        s.card_normal.z(), s.view_dir.x(),    s.view_dir.y(),    s.view_dir.z(),
                                        s.roughness,       s.f0,              s.translucency,    s.ao,
-                                       s.sun_visible,     s.fog};
+                                       s.sun_visible,     s.fog,             s.canopy};
     for (size_t f = 0; f < kFieldCount; ++f) data_[f][size_] = values[f];
     ++size_;
   }

@@ -118,7 +118,8 @@ void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch&
     const V3 view{load(SurfaceBatch::kViewX), load(SurfaceBatch::kViewY), load(SurfaceBatch::kViewZ)};
     const VF roughness = load(SurfaceBatch::kRoughness), f0 = load(SurfaceBatch::kF0);
     const VF translucency = load(SurfaceBatch::kTranslucency), sun_visible = load(SurfaceBatch::kSunVisible);
-    const VF fog = load(SurfaceBatch::kFog);
+    const VF fog = load(SurfaceBatch::kFog), canopy = load(SurfaceBatch::kCanopy);
+    const VF open = hn::Sub(one, canopy);
     const V3 to_eye{hn::Neg(view.x), hn::Neg(view.y), hn::Neg(view.z)};
     const VF ambient_visible =
         hn::Sub(one, hn::Mul(hn::Set(d, lighting.ao_strength), hn::Sub(one, load(SurfaceBatch::kAo))));
@@ -139,7 +140,7 @@ void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch&
     const VF mz = hn::Sub(hn::Mul(n.z, k), to_eye.z);
     const auto up = hn::Gt(mz, zero);
     const VF abs_z = hn::Abs(mz), view_fraction = sky_view(d, mz);
-    const VF mirror_weight = hn::Mul(specular_weight(d, n_dot_v, roughness, f0), ambient_visible);
+    const VF mirror_weight = hn::Mul(hn::Mul(specular_weight(d, n_dot_v, roughness, f0), ambient_visible), open);
     // Fog towards the view direction.
     const VF cs = max_of(v_dot_l, zero);
     VF toward = hn::Mul(cs, cs);
@@ -150,7 +151,8 @@ void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch&
     const VF albedo_c[3] = {albedo.x, albedo.y, albedo.z};
     for (int ch = 0; ch < 3; ++ch) {
       const VF sun = hn::Mul(hn::Set(d, sky.sun_illuminance[ch]), sun_visible);
-      VF diffuse = hn::Mul(ambient(d, sky.ambient_sh, ch, n), ambient_visible);
+      const VF sky_part = hn::Mul(ambient(d, sky.ambient_sh, ch, n), open);
+      VF diffuse = hn::Mul(hn::Add(sky_part, hn::Mul(hn::Set(d, lighting.canopy_light[ch]), canopy)), ambient_visible);
       diffuse = hn::IfThenElse(front, hn::Add(diffuse, hn::Mul(sun, n_dot_l)), diffuse);
       const VF front_light = hn::Mul(sun, hn::Mul(spec, n_dot_l));
       const VF back_light = hn::Mul(hn::Mul(hn::Mul(albedo_c[ch], hn::Set(d, kTransmissionTint[ch])), sun), amount);

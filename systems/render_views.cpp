@@ -1,6 +1,7 @@
 #include "systems/render_views.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -58,6 +59,19 @@ void render_right(const render::Scene& scene, const render::RenderOptions& optio
   render_camera(scene, right.frame.camera, options, renderer, right);
 }
 
+/// Draws `region` straight down (objects of canopy size only, kCanopyTexel texels) into work.overhead and
+/// makes work.canopy from it.
+void map_canopy(const render::Scene& scene, const world::WorldContext& ctx, const AABB& region,
+                render::RenderOptions options, render::Renderer& renderer, FrameWork& work) {
+  const Vec3f extent = region.max - region.min;
+  const int resolution =
+      std::clamp(int(std::ceil(double(std::max(extent.x(), extent.y())) / render::kCanopyTexel)), 16, 1024);
+  options.min_radius = render::kCanopyMinRadius;
+  renderer.render_shadow_map(scene, Vec3d::UnitZ(), region, resolution, options, work.overhead);
+  work.canopy = render::build_canopy_map(
+      work.overhead, [&](double x, double y) { return double(world::terrain_height(ctx.terrain, x, y)); });
+}
+
 }  // namespace
 
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
@@ -80,6 +94,7 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
   const render::ShadowPlan plan = render::plan_shadow(camera, ground_z, ctx.config.terrain.max_elevation, sun);
   renderer.render_shadow_map(scene, sun, plan.region, plan.resolution, options, work.shadow);
+  map_canopy(scene, ctx, plan.region, options, renderer, work);
   work.shadow_s = clock.seconds();
 }
 

@@ -17,6 +17,7 @@
 #include "io/dataset_card.hpp"
 #include "io/output_types.hpp"
 #include "raycast/lidar.hpp"
+#include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
 #include "render/frame_lighting.hpp"
 #include "render/renderer.hpp"
@@ -49,6 +50,8 @@ struct FrameWork {
   std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
   std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.
   render::ShadowMap shadow;          ///< The view's sun shadow map.
+  render::ShadowMap overhead;        ///< The view's region drawn straight down (the canopy map's source).
+  render::CanopyMap canopy;          ///< The canopy over the view (sky light under trees).
   io::EncodedSet files;              ///< Encoded outputs.
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
   uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
@@ -81,7 +84,8 @@ class FrameSlots {
 };
 
 /// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from `scene` — the left camera's into
-/// `work`, a stereo pair's right camera's into work.right — and the left camera's shadow map when rgb is selected.
+/// `work`, a stereo pair's right camera's into work.right — and the left camera's shadow map and canopy map when
+/// rgb is selected.
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   std::span<const CameraSensor> cameras, render::Renderer& renderer, FrameWork& work);
 

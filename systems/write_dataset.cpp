@@ -79,13 +79,13 @@ io::CameraRecord camera_record(const Config& config, const world::PlannedFrame& 
   return r;
 }
 
-/// Shades RGB (when selected, with `shadow` and, given one, the EV100 `ev100`) and encodes every selected output of
-/// `work`; the LiDAR sweep's files too when it has one.
+/// Shades RGB (when selected, lit as `sun` says and, given one, with the EV100 `ev100`) and encodes every selected
+/// output of `work`; the LiDAR sweep's files too when it has one.
 void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work,
-                           const render::ShadowMap& shadow, std::optional<float> ev100) {
+                           const FrameWork& sun, std::optional<float> ev100) {
   const world::PlannedFrame& f = work.frame;
   if (settings.outputs.has(io::OutputType::Rgb)) {
-    shade_frame(ctx, work, shadow, ev100);
+    shade_frame(ctx, work, sun, ev100);
   } else {
     work.shade_s = 0;
     work.bare_soil_pixels = 0;
@@ -115,7 +115,7 @@ void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings
 /// Shades and encodes `work`'s view, and with a stereo baseline the left camera's disparity and the right
 /// camera's view (the left's shadow map and exposure).
 void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
-  shade_and_encode_view(ctx, settings, work, work.shadow, std::nullopt);
+  shade_and_encode_view(ctx, settings, work, work, std::nullopt);
   if (settings.stereo_baseline_m <= 0) return;
   const Stopwatch clock;
   const Camera& camera = work.frame.camera;
@@ -123,7 +123,7 @@ void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& set
   work.files.push_back({io::frame_file("disparity", work.frame.frame, "png"),
                         io::encode_png_grey16(disparity, camera.width, camera.height)});
   work.encode_s += clock.seconds();
-  shade_and_encode_view(ctx, settings, *work.right, work.shadow, work.ev100);
+  shade_and_encode_view(ctx, settings, *work.right, work, work.ev100);
 }
 
 /// InputError when `path` is a symbolic link (Silva writes only into real folders of the run folder).
@@ -144,6 +144,7 @@ void write_view(const Config& config, const CaptureSettings& settings, const Fra
   }
   io::CameraRecord record = camera_record(config, work.frame, settings.stereo_baseline_m);
   record.lighting = lighting_record(work, settings.outputs.has(io::OutputType::Rgb));
+  if (settings.outputs.has(io::OutputType::Rgb)) record.model = exposed_camera_model(record.model, work.ev100);
   const std::string camera = io::camera_json(record);
   io::write_file_atomic(settings.run_dir / camera_file(work.frame), camera);
   stats.bytes_written += camera.size();
@@ -177,19 +178,18 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 
 }  // namespace
 
-void shade_frame(const world::WorldContext& ctx, FrameWork& work, const render::ShadowMap& shadow,
-                 std::optional<float> ev100) {
+void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWork& sun, std::optional<float> ev100) {
   const world::PlannedFrame& f = work.frame;
   const Stopwatch clock;
   const render::FrameLighting& lighting = work.lighting;
   const std::string noise_stream = io::camera_folder(f.sequence, f.right);
   const render::ShadeInputs in{work.gbuffer,     f.camera,
-                               lighting.preset,  &shadow,
+                               lighting.preset,  &sun.shadow,
                                uint64_t(ctx.config.seed), noise_stream,
                                uint64_t(f.frame), frame_camera_model(ctx.config, f),
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
                                lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config)),
-                               ev100};
+                               ev100,            &sun.canopy};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;

@@ -58,11 +58,11 @@ struct DatasetWriter {
   int total = 0;                             ///< Frames the run captures (for progress).
 };
 
-/// Shades `work`'s RGB from its G-buffer and `shadow` under its lighting (work.lighting) as a capture does (the
-/// frame's camera model, edge antialiasing when camera.antialias; exposed with `ev100` when given), into work.rgb;
-/// sets shade_s, bare_soil_pixels and ev100.
-void shade_frame(const world::WorldContext& ctx, FrameWork& work, const render::ShadowMap& shadow,
-                 std::optional<float> ev100);
+/// Shades `work`'s RGB from its G-buffer under its lighting (work.lighting) with the shadow map and canopy of
+/// `sun` (work itself, or a stereo pair's left view) as a capture does (the frame's camera model, edge
+/// antialiasing when camera.antialias; exposed with `ev100` when given), into work.rgb; sets shade_s,
+/// bare_soil_pixels and ev100.
+void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWork& sun, std::optional<float> ev100);
 
 /// The planes the label encoders read, viewing `g`.
 io::LabelPlanes label_planes(const render::GBuffer& g);

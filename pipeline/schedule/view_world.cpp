@@ -79,7 +79,7 @@ std::vector<uint8_t> view_image(const world::WorldContext& ctx, const systems::C
   const io::LabelPlanes planes = systems::label_planes(work.gbuffer);
   switch (mode) {
     case ViewMode::Rgb:
-      systems::shade_frame(ctx, work, work.shadow, std::nullopt);
+      systems::shade_frame(ctx, work, work, std::nullopt);
       return work.rgb;
     case ViewMode::Semantic:
       return io::semantic_color_image(planes, settings.ontology);

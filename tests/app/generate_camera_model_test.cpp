@@ -42,7 +42,7 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> effects = {
       {"noise", {"camera.noise=true", "camera.gain=8"}},
       {"vignetting", {"camera.vignetting=1"}},
-      {"chromatic_aberration", {"camera.chromatic_aberration=0.05"}},
+      {"chromatic_aberration", {"camera.chromatic_aberration=0.003"}},
       {"depth_of_field",
        {"camera.depth_of_field=true", "camera.f_number=0.5", "camera.sensor_width_mm=100", "camera.focus_distance=1"}},
       {"motion_blur", {"camera.motion_blur=true", "camera.shutter_s=1", "camera.autopilot_speed=5"}},
@@ -65,7 +65,8 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
     EXPECT_EQ(camera["depth_of_field"].is_null(), name != "depth_of_field");
     EXPECT_EQ(camera["motion_blur"].is_null(), name != "motion_blur");
     EXPECT_EQ(camera["vignetting"], name == "vignetting" ? 1.0 : 0.0);
-    EXPECT_EQ(camera["chromatic_aberration"], name == "chromatic_aberration" ? 0.05 : 0.0);
+    EXPECT_EQ(camera["chromatic_aberration"], name == "chromatic_aberration" ? 0.003 : 0.0);
+    EXPECT_EQ(camera["chroma"], 1.0);  // a day frame is exposed at the base gain
     const auto random_camera = nlohmann::json::parse(files.at("random/camera/000000.json"))["camera_model"];
     EXPECT_TRUE(random_camera["motion_blur"].is_null());
   }

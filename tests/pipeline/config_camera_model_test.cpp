@@ -28,7 +28,7 @@ TEST(ConfigCameraModel, OutOfRangeValuesNameKeyAndRange) {
             "--set camera.vignetting=1.5: camera.vignetting = 1.5 is out of range (allowed: 0 to 1)");
   EXPECT_EQ(load_message({"camera.chromatic_aberration=0.1"}),
             "--set camera.chromatic_aberration=0.1: camera.chromatic_aberration = 0.1 is out of range (allowed: 0 "
-            "to 0.05)");
+            "to 0.003)");
   EXPECT_EQ(load_message({"camera.f_number=0.2"}),
             "--set camera.f_number=0.2: camera.f_number = 0.2 is out of range (allowed: 0.5 to 64)");
   EXPECT_EQ(load_message({"camera.shutter_s=0"}),
@@ -39,7 +39,7 @@ TEST(ConfigCameraModel, OutOfRangeValuesNameKeyAndRange) {
   EXPECT_EQ(load_message({"camera.noise=1"}),
             "--set camera.noise=1: camera.noise must be a boolean (true or false), got an integer (1)");
   EXPECT_EQ(load_message({"camera.gain=4", "camera.vignetting=0", "camera.depth_of_field=true",
-                          "camera.chromatic_aberration=0.01", "camera.motion_blur=true"}),
+                          "camera.chromatic_aberration=0.002", "camera.motion_blur=true"}),
             "");
 }
 

@@ -116,7 +116,8 @@ def check_panoptic_for_detectron2():
         png = read(source(sequence, frame, "rgb", "png"))
         assert jpeg is not None and jpeg.shape == png.shape, image_file
         mse = np.mean((jpeg.astype(np.float64) - png.astype(np.float64)) ** 2)
-        assert 10 * np.log10(255 ** 2 / max(mse, 1e-12)) > 30, f"{image_file}: JPEG too far from the PNG"
+        # Quality 95 of a noisy forest frame: 29-31 dB here; another frame would be near 12 dB.
+        assert 10 * np.log10(255 ** 2 / max(mse, 1e-12)) > 27, f"{image_file}: JPEG too far from the PNG"
         assert os.path.isfile(os.path.join(out, "panoptic", ann["file_name"]))
         assert all(s["category_id"] in cats for s in ann["segments_info"])
 

@@ -42,10 +42,10 @@ TEST(CameraNoise, DrawsRepeatPerFrameAndDifferAcrossFrames) {
   EXPECT_GT(differ, 990);
 }
 
-/// Narkowicz's ACES fit.
+/// Narkowicz's ACES fit scaled to reach white at signal 1 (the camera's tone curve).
 double aces(double x) {
   x = std::max(x, 0.0);
-  return std::min(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 1.0);
+  return std::min(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14) * (3.16 / 2.54), 1.0);
 }
 
 /// The unrounded 8-bit sRGB code of exposed linear value x: 255 * sRGB(ACES(x)) (IEC 61966-2-1).
@@ -115,6 +115,41 @@ TEST(CameraNoise, GreyCardsFollowTheShotAndReadNoiseModel) {
       EXPECT_NEAR(sigma, expected, 0.1 * expected);
     }
   }
+}
+
+TEST(CameraNoise, HighGainKeepsTheNoiseLevelButMovesItsColourToLuma) {
+  CameraModel model;
+  model.noise = SensorNoise{10000, 3, 8};
+  const double x = level_for_code(45.0);
+  for (double chroma : {0.5, 0.0}) {
+    model.chroma = chroma;
+    const auto [mean, sigma] = card_codes(model, float(x));
+    EXPECT_NEAR(sigma, model_sigma(x, *model.noise), 0.1 * model_sigma(x, *model.noise)) << chroma;
+  }
+  // Without colour the three channels share one draw: every pixel of a grey card is grey.
+  const Camera cam = Camera::from_fov(64, 8, 90, 0.05, 150);
+  RowEncoder encoder(cam, model, 1.0f, 42, noise_key("random", 7));
+  const std::vector<float> grey(64 * 3, float(x));
+  std::vector<uint8_t> out(64 * 3);
+  int noisy = 0;
+  for (int v = 0; v < 8; ++v) {
+    encoder.encode(v, grey.data(), out.data());
+    for (size_t u = 0; u < 64; ++u) {
+      EXPECT_EQ(out[3 * u], out[3 * u + 1]);
+      EXPECT_EQ(out[3 * u + 1], out[3 * u + 2]);
+      noisy += out[3 * u] != out[0] ? 1 : 0;
+    }
+  }
+  EXPECT_GT(noisy, 100);  // and still noisy
+  // A coloured card loses its colour: chroma 0 leaves its Rec.709 luminance in every channel.
+  model.noise.reset();
+  RowEncoder plain(cam, model, 1.0f, 42, 0);
+  std::vector<float> red(64 * 3, 0.0f);
+  for (size_t u = 0; u < 64; ++u) red[3 * u] = 0.5f;
+  plain.encode(0, red.data(), out.data());
+  EXPECT_EQ(out[0], out[1]);
+  EXPECT_EQ(out[1], out[2]);
+  EXPECT_EQ(out[0], linear_to_srgb8(tonemap_aces(0.2126f * 0.5f)));
 }
 
 TEST(CameraNoise, ReadNoiseRulesTheDarkAndShotNoiseTheBright) {

@@ -12,8 +12,11 @@ namespace {
 TEST(ShadingPost, AcesFitKnownAnswersAndMonotone) {
   EXPECT_EQ(tonemap_aces(0.0f), 0.0f);
   EXPECT_EQ(tonemap_aces(-1.0f), 0.0f);
-  // Narkowicz fit at 1: (2.51 + 0.03) / (2.43 + 0.59 + 0.14).
-  EXPECT_NEAR(tonemap_aces(1.0f), 2.54f / 3.16f, 1e-6f);
+  // Narkowicz fit at 0.5, (0.5 (1.255 + 0.03)) / (0.5 (1.215 + 0.59) + 0.14), over its value at 1, 2.54 / 3.16.
+  EXPECT_NEAR(tonemap_aces(0.5f), (0.6425 / 1.0425) / (2.54 / 3.16), 1e-6);
+  // The sensor's full scale is white, and so is everything above it.
+  EXPECT_NEAR(tonemap_aces(1.0f), 1.0f, 1e-6f);
+  EXPECT_EQ(tonemap_aces(1.01f), 1.0f);
   EXPECT_EQ(tonemap_aces(1000.0f), 1.0f);
   float prev = 0;
   for (int i = 1; i < 400; ++i) {

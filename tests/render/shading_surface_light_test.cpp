@@ -22,7 +22,7 @@ Vec3f unit(std::mt19937& rng) {
 
 /// Random surface samples covering the combine's branches: normals facing towards and away from
 /// the sun and the eye, lit, half-shadowed and shadowed, opaque and translucent, with and without
-/// fog, every roughness the lanes take (from kSharpReflection to 1).
+/// fog, open and under the canopy, every roughness the lanes take (from kSharpReflection to 1).
 std::vector<SurfaceSample> samples(uint32_t seed, size_t count) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);
@@ -41,6 +41,7 @@ std::vector<SurfaceSample> samples(uint32_t seed, size_t count) {
     s.ao = u01(rng);
     s.sun_visible = steps[(i / 4) % 4];
     s.fog = i % 5 == 0 ? 0.0f : u01(rng) * 0.8f;
+    s.canopy = i % 6 == 0 ? 0.0f : u01(rng);
     out.push_back(s);
   }
   return out;
@@ -87,11 +88,18 @@ TEST(SurfaceLight, LanesMatchOnePixelAtATimeOnEveryHighwayTarget) {
   }
 }
 
+/// The clear day's lighting at a camera 1.6 m up.
+struct ClearDay {
+  LightingPreset lit = with_weather(preset("day", "clear"));
+  Sky sky{lit};
+  HeightFog fog{lit, sky, Vec3f(0.0f, 0.0f, 1.6f)};
+  SurfaceLighting lighting{sky, fog, lit};
+};
+
 TEST(SurfaceLight, SunLightsOnlyWhatFacesItAndBackLightPassesTranslucentCards) {
-  const LightingPreset lit = with_weather(preset("day", "clear"));
-  const Sky sky(lit);
-  const HeightFog fog(lit, sky, Vec3f(0.0f, 0.0f, 1.6f));
-  const SurfaceLighting lighting(sky, fog, lit);
+  const ClearDay day;
+  const Sky& sky = day.sky;
+  const SurfaceLighting& lighting = day.lighting;
   SurfaceSample s;
   s.albedo = Vec3f(0.3f, 0.3f, 0.3f);
   s.view_dir = Vec3f(1.0f, 0.0f, 0.0f);
@@ -106,6 +114,26 @@ TEST(SurfaceLight, SunLightsOnlyWhatFacesItAndBackLightPassesTranslucentCards) {
   s.translucency = 1.0f;
   const Vec3f leaf = light_surface(lighting, s);
   EXPECT_GT(leaf.y(), opaque.y());
+}
+
+TEST(SurfaceLight, TheCanopyTakesSkyLightAndGivesBackLessGreenLight) {
+  const ClearDay day;
+  const Sky& sky = day.sky;
+  const SurfaceLighting& lighting = day.lighting;
+  SurfaceSample s;
+  s.albedo = Vec3f(0.3f, 0.3f, 0.3f);
+  s.view_dir = Vec3f(1.0f, 0.0f, -0.2f).normalized();
+  s.normal = s.card_normal = Vec3f(0.0f, 0.0f, 1.0f);
+  s.sun_visible = 0.0f;
+  const Vec3f open = light_surface(lighting, s);
+  s.canopy = 1.0f;
+  const Vec3f closed = light_surface(lighting, s);
+  // Under a closed canopy only its scattered light is left: the albedo x canopy light / pi, no sky.
+  const Vec3f want = s.albedo.cwiseProduct(lighting.canopy_light) * 0.318309886f;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(closed[c], want[c], 1e-4f * want[c]);
+  EXPECT_LT(closed.sum(), 0.25f * open.sum());
+  EXPECT_GT(closed.y(), closed.x());  // the leaves pass green
+  EXPECT_GT(closed.x(), closed.z());
 }
 
 }  // namespace

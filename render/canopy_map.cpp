@@ -1,0 +1,146 @@
+#include "render/canopy_map.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace silva::render {
+
+namespace {
+
+/// Lowest sine of the light's elevation used to turn light-space depth into height (a grazing light
+/// would make metres of height thousands of metres of depth).
+constexpr double kMinSunSine = 0.1;
+
+/// Raw (unblurred) cover and cover x depth of one cell of `b` x `b` shadow texels.
+struct CellCanopy {
+  float cover = 0, cover_depth = 0;
+};
+
+/// The canopy of cell (cx, cy): the ground's light-space depth under the cell's farthest surface
+/// (one refinement along the light), then the texels at least kCanopyHeight above it.
+CellCanopy cell_canopy(const ShadowMap& s, const Mat4d& light_to_world, double sun_sine, const GroundHeight& ground,
+                       int b, int cx, int cy) {
+  const int x0 = cx * b, y0 = cy * b, x1 = std::min(x0 + b, s.width), y1 = std::min(y0 + b, s.height);
+  float far = -std::numeric_limits<float>::infinity();
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const float d = s.depth[size_t(y) * size_t(s.width) + size_t(x)];
+      if (std::isfinite(d)) far = std::max(far, d);
+    }
+  if (!std::isfinite(far)) return {};
+  const double lx = s.origin_x + (0.5 * double(x0 + x1)) * s.texel_size;
+  const double ly = s.origin_y + (0.5 * double(y0 + y1)) * s.texel_size;
+  double ground_depth = double(far);
+  for (int step = 0; step < 2; ++step) {
+    const Eigen::Vector4d w = light_to_world * Eigen::Vector4d(lx, ly, ground_depth, 1.0);
+    ground_depth += (w.z() - ground(w.x(), w.y())) / sun_sine;
+  }
+  const float limit = float(ground_depth - kCanopyHeight / sun_sine);
+  int count = 0;
+  double depth_sum = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const float d = s.depth[size_t(y) * size_t(s.width) + size_t(x)];
+      if (d <= limit) ++count, depth_sum += double(d);
+    }
+  const float share = float(count) / float((x1 - x0) * (y1 - y0));
+  return {share, count > 0 ? float(depth_sum / double(count)) * share : 0.0f};
+}
+
+/// Box sums of radius r along rows (step 1) or columns (step width) of a width x height plane, in place.
+void box_blur(std::vector<float>& plane, int width, int height, int r, bool columns) {
+  const int lines = columns ? width : height, length = columns ? height : width;
+  const size_t step = columns ? size_t(width) : 1, line_step = columns ? 1 : size_t(width);
+  tbb::parallel_for(tbb::blocked_range<int>(0, lines), [&](const tbb::blocked_range<int>& range) {
+    std::vector<float> line(static_cast<size_t>(length));
+    for (int l = range.begin(); l < range.end(); ++l) {
+      float* p = plane.data() + size_t(l) * line_step;
+      for (int i = 0; i < length; ++i) line[size_t(i)] = p[size_t(i) * step];
+      for (int i = 0; i < length; ++i) {
+        const int a = std::max(0, i - r), z = std::min(length - 1, i + r);
+        double sum = 0;
+        for (int k = a; k <= z; ++k) sum += double(line[size_t(k)]);
+        p[size_t(i) * step] = float(sum / double(2 * r + 1));
+      }
+    }
+  });
+}
+
+}  // namespace
+
+CanopyMap build_canopy_map(const ShadowMap& shadow, const GroundHeight& ground) {
+  CanopyMap map;
+  if (shadow.width <= 0 || shadow.height <= 0 || !(shadow.texel_size > 0.0)) return map;
+  const int b = std::max(1, int(std::lround(kCanopyCell / shadow.texel_size)));
+  map.width = (shadow.width + b - 1) / b;
+  map.height = (shadow.height + b - 1) / b;
+  map.world_to_light = shadow.world_to_light;
+  map.cell = double(b) * shadow.texel_size;
+  map.origin_x = shadow.origin_x;
+  map.origin_y = shadow.origin_y;
+  const Mat4d light_to_world = shadow.world_to_light.inverse();
+  const double sun_sine = std::max(-shadow.world_to_light(2, 2), kMinSunSine);
+  const size_t cells = size_t(map.width) * size_t(map.height);
+  map.cover.assign(cells, 0.0f);
+  map.depth.assign(cells, 0.0f);
+  tbb::parallel_for(tbb::blocked_range<int>(0, map.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int cy = rows.begin(); cy < rows.end(); ++cy)
+      for (int cx = 0; cx < map.width; ++cx) {
+        const CellCanopy c = cell_canopy(shadow, light_to_world, sun_sine, ground, b, cx, cy);
+        const size_t i = size_t(cy) * size_t(map.width) + size_t(cx);
+        map.cover[i] = c.cover;
+        map.depth[i] = c.cover_depth;
+      }
+  });
+  const int r = std::max(1, int(std::lround(kCanopyRadius / map.cell)));
+  for (std::vector<float>* plane : {&map.cover, &map.depth})
+    for (bool columns : {false, true}) box_blur(*plane, map.width, map.height, r, columns);
+  for (size_t i = 0; i < cells; ++i) map.depth[i] = map.cover[i] > 0.0f ? map.depth[i] / map.cover[i] : 0.0f;
+  return map;
+}
+
+void canopy_share_row(const CanopyMap& map, const Vec3f* positions, size_t count, float* out) {
+  if (map.width <= 0 || map.height <= 0) {
+    std::fill(out, out + count, 0.0f);
+    return;
+  }
+  // Light-space rows in float, cell units for x and y: the cover is smooth over metres, so float
+  // precision (millimetres here) is ample.
+  const Mat4d& m = map.world_to_light;
+  const float inv_cell = float(1.0 / map.cell);
+  const Vec3f rx = m.block<1, 3>(0, 0).transpose().cast<float>() * inv_cell;
+  const Vec3f ry = m.block<1, 3>(1, 0).transpose().cast<float>() * inv_cell;
+  const Vec3f rz = m.block<1, 3>(2, 0).transpose().cast<float>();
+  const float ox = float(map.origin_x / map.cell) + 0.5f, oy = float(map.origin_y / map.cell) + 0.5f;
+  const float inv_soft = float(1.0 / kCanopySoftness);
+  for (size_t k = 0; k < count; ++k) {
+    const Vec3f& p = positions[k];
+    const float fx = rx.dot(p) - ox, fy = ry.dot(p) - oy;
+    out[k] = 0.0f;
+    if (!(fx > -1.0f && fy > -1.0f && fx < float(map.width) && fy < float(map.height))) continue;
+    const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+    const float ax = fx - float(x0), ay = fy - float(y0);
+    const int xa = std::max(x0, 0), xb = std::min(x0 + 1, map.width - 1);
+    const int ya = std::max(y0, 0), yb = std::min(y0 + 1, map.height - 1);
+    const size_t r0 = size_t(ya) * size_t(map.width), r1 = size_t(yb) * size_t(map.width);
+    const size_t c[4] = {r0 + size_t(xa), r0 + size_t(xb), r1 + size_t(xa), r1 + size_t(xb)};
+    const float w[4] = {(1.0f - ax) * (1.0f - ay), ax * (1.0f - ay), (1.0f - ax) * ay, ax * ay};
+    float cover = 0, cover_depth = 0;
+    for (int i = 0; i < 4; ++i) {
+      const float wc = w[i] * map.cover[c[i]];
+      cover += wc;
+      cover_depth += wc * map.depth[c[i]];
+    }
+    if (!(cover > 0.0f)) continue;
+    const float below = std::clamp((rz.dot(p) - cover_depth / cover) * inv_soft + 0.5f, 0.0f, 1.0f);
+    // Vertical gap fraction g -> diffuse (cosine-weighted hemisphere) transmittance 2∫g^(1/μ)μ dμ ≈ g^1.5.
+    const float gap = 1.0f - kCanopyDensity * cover * below;
+    out[k] = 1.0f - gap * std::sqrt(gap);
+  }
+}
+
+}  // namespace silva::render
