@@ -23,7 +23,7 @@ struct SensorNoise {
 
 /// Colour lost per stop of gain above the base gain: the chroma noise reduction of a camera at high
 /// gain keeps 1 / (1 + kChromaLossPerStop x stops) of each pixel's colour.
-inline constexpr double kChromaLossPerStop = 0.2;
+inline constexpr double kChromaLossPerStop = 0.4;
 
 /// Thin-lens depth of field, focused at `focus_distance` metres along the optical axis.
 struct DepthOfField {

@@ -5,8 +5,8 @@
 namespace silva::render {
 
 /// Tone-curve input the log-average luminance of an auto-exposed frame is mapped to: set so that the
-/// day preset's forest views meter on average at its own ev100 15 (a forest is darker than mid-grey).
-inline constexpr float kAutoExposureKey = 0.085f;
+/// day preset's forest views meter on average at its own ev100 14.5 (a forest is darker than mid-grey).
+inline constexpr float kAutoExposureKey = 0.067f;
 /// Pixel spacing of the metering grid: pixel (kMeterStep i + kMeterStep / 2, kMeterStep j + kMeterStep / 2).
 inline constexpr int kMeterStep = 4;
 /// Luminance floor of the metering (kcd/m², about a starless overcast night), so a black pixel
