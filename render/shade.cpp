@@ -212,7 +212,12 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   CameraModel exposed_model = exposed_camera_model(in.model, ev100);
-  const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height);
+  float canopy_at_camera = 0.0f;
+  if (in.canopy) {
+    const Vec3f eye = in.camera.position().cast<float>();
+    canopy_share_row(*in.canopy, &eye, 1, &canopy_at_camera);
+  }
+  const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
   const bool whole_frame = needs_whole_frame(in.model) || metered;

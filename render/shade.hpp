@@ -43,7 +43,7 @@ struct ShadeCounts {
 /// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
 /// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
 /// across pixels of similar depth; under the canopy map's trees partly replaced by their green scattered light), through exponential height fog; sky pixels get the Preetham /
-/// overcast sky; falling rain or snow over the radiance. Then the camera model: motion blur, depth
+/// overcast sky; falling rain or snow over the radiance (thinner under the canopy over the camera). Then the camera model: motion blur, depth
 /// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
 /// exposure (the preset's, or metered from the whole linear frame with auto_exposure; minus the
 /// compensation) with the white balance and vignetting, shot + read sensor noise, ACES tone mapping, sRGB.

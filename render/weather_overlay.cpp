@@ -21,13 +21,13 @@ float cell_value(int32_t x, int32_t y, int32_t layer, uint32_t salt) { return la
 }  // namespace
 
 WeatherOverlay::WeatherOverlay(const WeatherPreset& weather, const Sky& sky, uint64_t seed, uint64_t frame_key,
-                               int height)
-    : rain_(weather.rain_streaks),
-      snow_(weather.snowfall),
+                               int height, float canopy)
+    : rain_(weather.rain_streaks * (1.0f - (1.0f - kUnderCanopyFall) * canopy)),
+      snow_(weather.snowfall * (1.0f - (1.0f - kUnderCanopyFall) * canopy)),
       salt_(uint32_t(rng_bits(seed, frame_key, uint64_t(Purpose::WeatherOverlay), 0))),
       streak_length_(std::max(float(height) / 10.0f, 4.0f)),
       flake_cell_(std::max(float(height) / 45.0f, 4.0f)),
-      streak_radiance_(sky.horizon_radiance * 1.3f),
+      streak_radiance_(sky.horizon_radiance * (1.3f * (1.0f - 0.7f * canopy))),
       flake_radiance_((sky.ambient(Vec3f::UnitZ()) + sky.sun_illuminance * std::max(sky.to_sun.z(), 0.0f)) *
                       (0.85f * kInvPi)) {}
 

@@ -9,11 +9,17 @@
 
 namespace silva::render {
 
+/// Share of the rain and snowfall a closed canopy lets through (drips and what blows in).
+inline constexpr float kUnderCanopyFall = 0.25f;
+
 /// The rain and snowfall of one frame: pure per-pixel queries keyed on (seed, frame key, pixel).
 struct WeatherOverlay {
   /// Densities from `weather`, the light of streaks and flakes from `sky`, the pattern from
-  /// (seed, frame_key), sizes from the image `height`.
-  WeatherOverlay(const WeatherPreset& weather, const Sky& sky, uint64_t seed, uint64_t frame_key, int height);
+  /// (seed, frame_key), sizes from the image `height`. Under a canopy (`canopy`: the share of the sky
+  /// light it takes at the camera, canopy_share_row) fewer drops and flakes fall past the lens
+  /// (kUnderCanopyFall of them under a closed one) and the streaks catch less sky light.
+  WeatherOverlay(const WeatherPreset& weather, const Sky& sky, uint64_t seed, uint64_t frame_key, int height,
+                 float canopy = 0.0f);
 
   /// True when there is rain or snowfall to draw.
   bool active() const { return rain_ > 0.0f || snow_ > 0.0f; }

@@ -95,8 +95,8 @@ TEST(ShadingPresets, SnowAndWetnessChangeTheGroundsLook) {
 
 TEST(ShadingPresets, RainAndSnowfallAreSeededPerFrame) {
   const Sky sky(preset_day());
-  const auto draw = [&](const WeatherPreset& weather, uint64_t frame_key) {
-    const WeatherOverlay overlay(weather, sky, 1, frame_key, 90);
+  const auto draw = [&](const WeatherPreset& weather, uint64_t frame_key, float canopy = 0.0f) {
+    const WeatherOverlay overlay(weather, sky, 1, frame_key, 90, canopy);
     std::vector<Vec3f> image(160 * 90, Vec3f::Zero());
     for (int v = 0; v < 90; ++v) overlay.apply_row(v, &image[size_t(v) * 160], 160);
     return image;
@@ -110,6 +110,11 @@ TEST(ShadingPresets, RainAndSnowfallAreSeededPerFrame) {
     for (const Vec3f& p : a) touched += p != Vec3f::Zero() ? 1 : 0;
     EXPECT_GT(touched, a.size() / 100);  // visible ...
     EXPECT_LT(touched, a.size() / 3);    // ... but the scene stays visible
+    // Under a closed canopy about kUnderCanopyFall of the drops and flakes reach the lens.
+    size_t sheltered = 0;
+    for (const Vec3f& p : draw(w, 7, 1.0f)) sheltered += p != Vec3f::Zero() ? 1 : 0;
+    EXPECT_GT(sheltered, 0u);
+    EXPECT_LT(double(sheltered), 0.45 * double(touched));
   }
   EXPECT_FALSE(WeatherOverlay(WeatherPreset{}, sky, 1, 7, 90).active());
 }
