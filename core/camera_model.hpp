@@ -49,6 +49,7 @@ struct CameraModel {
   std::optional<DepthOfField> depth_of_field;  ///< Thin-lens blur, or a pinhole.
   std::optional<ExposureMotion> motion;        ///< Camera motion during the exposure, or a still camera.
   double chroma = 1;                           ///< Share of each pixel's colour kept (1 = all; exposed_camera_model).
+  int jpeg_quality = 0;                        ///< JPEG quality of the camera's stream (0 = none), applied last.
   bool operator==(const CameraModel&) const = default;
 };
 

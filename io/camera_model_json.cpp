@@ -40,6 +40,7 @@ nlohmann::ordered_json camera_model_json(const CameraModel& model) {
   j["vignetting"] = model.vignetting;
   j["chromatic_aberration"] = model.chromatic_aberration;
   j["chroma"] = model.chroma;
+  j["jpeg_quality"] = model.jpeg_quality;
   j["depth_of_field"] = nullptr;
   if (const auto& d = model.depth_of_field)
     j["depth_of_field"] = {
@@ -64,6 +65,7 @@ CameraModel parse_camera_model(const nlohmann::json& obj, const std::string& whe
   m.vignetting = json_number(j, "vignetting", where);
   m.chromatic_aberration = json_number(j, "chromatic_aberration", where);
   if (j.contains("chroma")) m.chroma = json_number(j, "chroma", where);
+  if (j.contains("jpeg_quality")) m.jpeg_quality = int(json_number(j, "jpeg_quality", where));
   if (const nlohmann::json* d = optional_object(j, "depth_of_field", where))
     m.depth_of_field = DepthOfField{json_number(*d, "f_number", where), json_number(*d, "focus_distance", where),
                                     json_number(*d, "focal_length_mm", where)};

@@ -19,4 +19,13 @@ std::vector<uint8_t> encode_jpeg_rgb8(std::span<const uint8_t> rgb, int width, i
   return jpeg;
 }
 
+std::vector<uint8_t> jpeg_round_trip(std::span<const uint8_t> rgb, int width, int height, int quality) {
+  const std::vector<uint8_t> jpeg = encode_jpeg_rgb8(rgb, width, height, quality);
+  const cv::Mat bgr = cv::imdecode(jpeg, cv::IMREAD_COLOR);
+  if (bgr.rows != height || bgr.cols != width) throw std::runtime_error("jpeg_round_trip: OpenCV could not decode its JPEG");
+  cv::Mat out_rgb;
+  cv::cvtColor(bgr, out_rgb, cv::COLOR_BGR2RGB);
+  return std::vector<uint8_t>(out_rgb.data, out_rgb.data + out_rgb.total() * 3);
+}
+
 }  // namespace silva::io

@@ -15,6 +15,7 @@
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
 #include "io/disparity.hpp"
+#include "io/jpeg_writer.hpp"
 #include "io/png_writer.hpp"
 #include "io/label_planes.hpp"
 #include "io/lidar_files.hpp"
@@ -197,6 +198,8 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
     render::smooth_edges(work.rgb, work.gbuffer.width, work.gbuffer.height, work.rgb_scratch);
     work.rgb.swap(work.rgb_scratch);
   }
+  if (ctx.config.camera.jpeg_quality > 0)
+    work.rgb = io::jpeg_round_trip(work.rgb, work.gbuffer.width, work.gbuffer.height, ctx.config.camera.jpeg_quality);
   work.shade_s = clock.seconds();
 }
 

@@ -139,6 +139,10 @@ std::vector<ConfigKey> build_schema() {
       {"camera.chromatic_aberration", T::Float,
        "lateral chromatic aberration: red sampled at radius x (1 - k), blue at (1 + k); 0 = none", between(0, 0.003),
        {}, [](Config& c) -> FieldRef { return &c.camera.chromatic_aberration; }},
+      {"camera.jpeg_quality", T::Int,
+       "JPEG quality the RGB is compressed with and decoded again before it is written (a compressed camera stream); "
+       "0 = none",
+       between(0, 100), {}, [](Config& c) -> FieldRef { return &c.camera.jpeg_quality; }},
       {"camera.depth_of_field", T::Bool, "thin-lens depth of field (camera.f_number, focus_distance)", {}, {},
        [](Config& c) -> FieldRef { return &c.camera.depth_of_field; }},
       {"camera.f_number", T::Float, "aperture f-number of the depth of field", between(0.5, 64), {},

@@ -43,6 +43,7 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
       {"noise", {"camera.noise=true", "camera.gain=8"}},
       {"vignetting", {"camera.vignetting=1"}},
       {"chromatic_aberration", {"camera.chromatic_aberration=0.003"}},
+      {"jpeg", {"camera.jpeg_quality=40"}},
       {"depth_of_field",
        {"camera.depth_of_field=true", "camera.f_number=0.5", "camera.sensor_width_mm=100", "camera.focus_distance=1"}},
       {"motion_blur", {"camera.motion_blur=true", "camera.shutter_s=1", "camera.autopilot_speed=5"}},
@@ -67,6 +68,7 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
     EXPECT_EQ(camera["vignetting"], name == "vignetting" ? 1.0 : 0.0);
     EXPECT_EQ(camera["chromatic_aberration"], name == "chromatic_aberration" ? 0.003 : 0.0);
     EXPECT_EQ(camera["chroma"], 1.0);  // a day frame is exposed at the base gain
+    EXPECT_EQ(camera["jpeg_quality"], name == "jpeg" ? 40 : 0);
     const auto random_camera = nlohmann::json::parse(files.at("random/camera/000000.json"))["camera_model"];
     EXPECT_TRUE(random_camera["motion_blur"].is_null());
   }

@@ -78,8 +78,8 @@ TEST(CameraJson, HasContractKeysInOrder) {
   std::vector<std::string> model_keys;
   for (const auto& [k, v] : model.items()) model_keys.push_back(k);
   EXPECT_EQ(model_keys,
-            (std::vector<std::string>{"noise", "vignetting", "chromatic_aberration", "chroma", "depth_of_field",
-                                      "motion_blur"}));
+            (std::vector<std::string>{"noise", "vignetting", "chromatic_aberration", "chroma", "jpeg_quality",
+                                      "depth_of_field", "motion_blur"}));
   EXPECT_EQ(model["noise"]["full_well_e"], 10000.0);
   EXPECT_EQ(model["noise"]["read_noise_e"], 3.0);
   EXPECT_EQ(model["noise"]["gain"], 2.5);
