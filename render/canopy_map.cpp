@@ -51,7 +51,8 @@ CellCanopy cell_canopy(const ShadowMap& s, const Mat4d& light_to_world, double s
   return {share, count > 0 ? float(depth_sum / double(count)) * share : 0.0f};
 }
 
-/// Box sums of radius r along rows (step 1) or columns (step width) of a width x height plane, in place.
+/// Box means of radius r along rows (step 1) or columns (step width) of a width x height plane, in place;
+/// beyond the plane counts as no canopy.
 void box_blur(std::vector<float>& plane, int width, int height, int r, bool columns) {
   const int lines = columns ? width : height, length = columns ? height : width;
   const size_t step = columns ? size_t(width) : 1, line_step = columns ? 1 : size_t(width);
