@@ -14,13 +14,15 @@ struct Stroke {
   Vec2f a, b;             ///< End points.
   float w0, w1;           ///< Half-widths at a and b (pointed/round: w0 is the widest).
   enum class Shape : uint8_t { Tapered, Pointed, Round } shape = Shape::Tapered;  ///< Width profile.
+  uint8_t alpha = 255;    ///< Alpha of the texels it covers, >= 128 (where strokes overlap, the first one's).
 };
 
 /// True when point p lies inside the stroke.
 bool stroke_covers(const Stroke& s, const Vec2f& p);
 
-/// A width x height mask, opaque where any stroke covers the texel centre.
-std::shared_ptr<const AlphaMask> rasterise_strokes(const std::vector<Stroke>& strokes, int width, int height);
+/// A width x height mask, opaque where any stroke covers the texel centre (with the alpha of the
+/// first stroke that does), 0 elsewhere.
+std::shared_ptr<AlphaMask> rasterise_strokes(const std::vector<Stroke>& strokes, int width, int height);
 
 /// A point at angle `deg` (0 = up the mask, positive = right) and distance `len` from `from`.
 Vec2f stroke_towards(const Vec2f& from, float deg, float len);

@@ -1,6 +1,6 @@
 #include "assets/species.hpp"
 
-#include "assets/alpha_masks.hpp"
+#include "assets/foliage_sprays.hpp"
 
 namespace silva::assets {
 
@@ -14,9 +14,9 @@ LevelParams trunk(int children, int whorl, float start, float rotate, float croo
 }
 
 /// Foliage cards on the twigs.
-FoliageParams cards(std::shared_ptr<const AlphaMask> mask, Material m, CardStyle style, float half, float spacing,
+FoliageParams cards(MaskFamily family, Material m, CardStyle style, float half, float spacing,
                     float start, float droop, int level, int max_cards) {
-  return {.mask = std::move(mask), .material = m, .role = Role::TreeCanopy, .style = style, .half = half,
+  return {.mask = nullptr, .family = family, .material = m, .role = Role::TreeCanopy, .style = style, .half = half,
           .spacing = spacing, .start = start, .droop = droop, .level = level, .max_cards = max_cards};
 }
 
@@ -33,7 +33,7 @@ const Species& norway_spruce() {
                   {.length = 0.32f, .length_var = 0.2f, .down = 70, .down_tip = 50, .down_var = 12, .curve_var = 6,
                    .tropism = 0.25f, .apical = 0.5f, .tip_radius = 0.3f, .segments = 2}}},
       {Material::BarkSpruce, Role::TreeTrunk, true,
-       cards(needle_spray_mask(), Material::NeedlesSpruce, CardStyle::Spray, 0.37f, 0.2f, 0.05f, 0.4f, 1, 4800)}};
+       cards(spruce_spray, Material::NeedlesSpruce, CardStyle::Spray, 0.37f, 0.2f, 0.05f, 0.4f, 1, 4800)}};
   return s;
 }
 
@@ -47,7 +47,7 @@ const Species& scots_pine() {
                   {.length = 0.3f, .length_var = 0.3f, .down = 50, .down_tip = 40, .down_var = 15, .curve = 15,
                    .curve_var = 10, .tropism = -0.03f, .apical = 0.3f, .tip_radius = 0.3f, .segments = 2}}},
       {Material::BarkPine, Role::TreeTrunk, true,
-       cards(pine_tuft_mask(), Material::NeedlesPine, CardStyle::Cluster, 0.57f, 0.16f, 0.45f, 0.0f, 1, 4800)}};
+       cards(pine_spray, Material::NeedlesPine, CardStyle::Cluster, 0.57f, 0.16f, 0.45f, 0.0f, 1, 4800)}};
   return s;
 }
 
@@ -62,7 +62,7 @@ const Species& european_larch() {
                   {.length = 0.45f, .length_var = 0.2f, .down = 60, .down_tip = 50, .down_var = 15, .curve_var = 6,
                    .tropism = 0.35f, .apical = 0.4f, .tip_radius = 0.3f, .segments = 3}}},
       {Material::BarkLarch, Role::TreeTrunk, true,
-       cards(larch_tuft_mask(), Material::NeedlesLarch, CardStyle::Spray, 0.30f, 0.2f, 0.2f, 0.2f, 1, 4500)}};
+       cards(larch_spray, Material::NeedlesLarch, CardStyle::Spray, 0.30f, 0.2f, 0.2f, 0.2f, 1, 4500)}};
   return s;
 }
 
@@ -79,7 +79,7 @@ const Species& european_beech() {
                   {.length = 0.5f, .length_var = 0.2f, .down = 45, .down_tip = 40, .down_var = 20, .curve_var = 10,
                    .tropism = 0.05f, .apical = 0.3f, .tip_radius = 0.4f, .segments = 2}}},
       {Material::BarkBeech, Role::TreeTrunk, true,
-       cards(beech_leaves_mask(), Material::LeavesBeech, CardStyle::Spray, 0.48f, 0.22f, 0.3f, 0.1f, 2, 5000)}};
+       cards(beech_spray, Material::LeavesBeech, CardStyle::Spray, 0.48f, 0.22f, 0.3f, 0.1f, 2, 5000)}};
   return s;
 }
 
@@ -94,7 +94,7 @@ const Species& silver_birch() {
                   {.length = 0.55f, .length_var = 0.2f, .down = 40, .down_tip = 30, .down_var = 15, .curve_var = 6,
                    .tropism = 0.4f, .apical = 0.3f, .tip_radius = 0.3f, .segments = 4}}},
       {Material::BarkBirch, Role::TreeTrunk, true,
-       cards(birch_leaves_mask(), Material::LeavesBirch, CardStyle::Spray, 0.28f, 0.2f, 0.1f, 0.5f, 2, 4000)}};
+       cards(birch_spray, Material::LeavesBirch, CardStyle::Spray, 0.28f, 0.2f, 0.1f, 0.5f, 2, 4000)}};
   return s;
 }
 
@@ -111,7 +111,7 @@ const Species& common_oak() {
                   {.length = 0.45f, .length_var = 0.25f, .down = 50, .down_tip = 50, .down_var = 25, .curve_var = 20,
                    .tropism = 0.02f, .apical = 0.3f, .tip_radius = 0.4f, .segments = 2}}},
       {Material::BarkOak, Role::TreeTrunk, true,
-       cards(oak_leaves_mask(), Material::LeavesOak, CardStyle::Cluster, 0.52f, 0.18f, 0.3f, 0.0f, 2, 4800)}};
+       cards(oak_spray, Material::LeavesOak, CardStyle::Cluster, 0.52f, 0.18f, 0.3f, 0.0f, 2, 4800)}};
   return s;
 }
 

@@ -115,7 +115,7 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
   const float spacing = std::max(f.spacing, total / float(std::max(1, budget)));
   // Fewer cards than the species' spacing asks for: each grows so the crown keeps its cover.
   const float enlarge = std::min(2.0f, std::sqrt(spacing / f.spacing));
-  b.begin_part(f.role, f.material, f.mask, true);
+  b.begin_part(f.role, f.material, f.family ? f.family(2.0f * f.half * enlarge) : f.mask, true);
   for (const Branch& br : s.branches) {
     const float from = card_from(br, f);
     if (from >= 1.0f) continue;

@@ -3,6 +3,7 @@
 /// kMinTubeRadius thick, and alpha-masked foliage (or bare-twig) cards on the twigs.
 #include <memory>
 
+#include "assets/foliage_sprays.hpp"
 #include "assets/generators.hpp"
 #include "assets/tree_skeleton.hpp"
 #include "core/rng.hpp"
@@ -23,7 +24,8 @@ enum class CardStyle : uint8_t {
 
 /// Foliage (or bare twig) cards of one tree.
 struct FoliageParams {
-  std::shared_ptr<const AlphaMask> mask;  ///< Card silhouette.
+  std::shared_ptr<const AlphaMask> mask;  ///< Card silhouette (when `family` is unset).
+  MaskFamily family = nullptr;            ///< Silhouettes per card size (botanical leaf size), or none.
   Material material = Material::Leaves;   ///< Card material.
   Role role = Role::TreeCanopy;           ///< Card role.
   CardStyle style = CardStyle::Spray;     ///< Placement.

@@ -17,8 +17,9 @@ namespace silva {
 struct AlphaMask {
   int width = 0;                 ///< Texels across.
   int height = 0;                ///< Texels down (row 0 is v in [0, 1/height)).
-  std::vector<uint8_t> alpha;    ///< width*height alpha values, row-major.
+  std::vector<uint8_t> alpha;    ///< width*height alpha values, row-major (opaque 128..254: a leaf's brightness).
   float cutoff = 0.5f;           ///< A texel is opaque when alpha/255 >= cutoff.
+  float feature_length = 0.0f;   ///< Typical leaf or needle length in texture units (0: not recorded).
   /// Nearest-texel lookup with repeat wrap: true when (u, v) is opaque (|u|, |v| < 2^31).
   bool opaque(float u, float v) const { return opaque_texel(texel(v, height) * width + texel(u, width)); }
   /// True when texel i (row-major) is opaque.

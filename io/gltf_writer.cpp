@@ -111,6 +111,8 @@ class MaterialTable {
       pbr["baseColorTexture"] = {{"index", texture(*part.mask)}};
       m["alphaMode"] = "MASK";
       m["alphaCutoff"] = double(part.mask->cutoff);
+      // Leaf or needle length in texture units: times the card's metres per texture unit, its length in metres.
+      if (part.mask->feature_length > 0.0f) m["extras"] = {{"leaf_length_uv", double(part.mask->feature_length)}};
     }
     m["pbrMetallicRoughness"] = std::move(pbr);
     if (part.double_sided) m["doubleSided"] = true;

@@ -15,6 +15,7 @@ void GBuffer::resize(int w, int h) {
   base_color.assign(n, 0);
   instance_id.assign(n, 0);
   variation.assign(n, 0);
+  leaf.assign(n, 0);
 }
 
 }  // namespace silva::render

@@ -216,7 +216,8 @@ VF lattice_value_lanes(VU x, uint32_t y, uint32_t z, uint32_t salt) {
 }
 
 /// foliage_albedo_row for one target: materials.cpp's variation_tint and foliage mottle on lanes.
-void FoliageRowImpl(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out) {
+void FoliageRowImpl(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, const float* leaf_shades,
+                    size_t count, Vec3f* out) {
   const DF d;
   const DU du;
   const size_t N = hn::Lanes(d);
@@ -225,9 +226,11 @@ void FoliageRowImpl(const Vec3f* points, const uint32_t* variations, const Vec3f
     const size_t lanes = std::min(N, count - first);
     HWY_ALIGN float pin[3 * hn::MaxLanes(d)] = {}, bin[3 * hn::MaxLanes(d)] = {}, res[3 * hn::MaxLanes(d)];
     HWY_ALIGN uint32_t vin[hn::MaxLanes(d)] = {};
+    HWY_ALIGN float lin[hn::MaxLanes(d)] = {};
     std::copy(points->data() + 3 * first, points->data() + 3 * (first + lanes), pin);
     std::copy(bases->data() + 3 * first, bases->data() + 3 * (first + lanes), bin);
     std::copy(variations + first, variations + first + lanes, vin);
+    std::copy(leaf_shades + first, leaf_shades + first + lanes, lin);
     VF px, py, pz, br, bg, bb;
     hn::LoadInterleaved3(d, pin, px, py, pz);
     hn::LoadInterleaved3(d, bin, br, bg, bb);
@@ -236,11 +239,12 @@ void FoliageRowImpl(const Vec3f* points, const uint32_t* variations, const Vec3f
     const VF yellow = hn::Mul(hn::Set(d, 0.25f), lattice_value_lanes(variation, 5, 11, kFoliage));
     const VF mottle = value_noise3_lanes(hn::Mul(px, scale), hn::Mul(py, scale), hn::Mul(pz, scale), kFoliageMottleSalt);
     const VF shade = hn::Add(hn::Set(d, 0.8f), hn::Mul(hn::Set(d, 0.4f), mottle));
+    const VF leaf = hn::Load(d, lin);
     const VF tr = hn::Mul(bright, hn::Add(one, yellow));
     const VF tg = hn::Mul(bright, hn::Add(one, hn::Mul(hn::Set(d, 0.4f), yellow)));
     const VF tb = hn::Mul(bright, hn::Sub(one, hn::Mul(hn::Set(d, 0.5f), yellow)));
-    hn::StoreInterleaved3(hn::Mul(hn::Mul(br, tr), shade), hn::Mul(hn::Mul(bg, tg), shade),
-                          hn::Mul(hn::Mul(bb, tb), shade), d, res);
+    hn::StoreInterleaved3(hn::Mul(hn::Mul(hn::Mul(br, tr), shade), leaf), hn::Mul(hn::Mul(hn::Mul(bg, tg), shade), leaf),
+                          hn::Mul(hn::Mul(hn::Mul(bb, tb), shade), leaf), d, res);
     std::copy(res, res + 3 * lanes, out->data() + 3 * first);
   }
 }
@@ -258,8 +262,9 @@ HWY_EXPORT(GroundRowImpl);
 HWY_EXPORT(GroundTargetImpl);
 HWY_EXPORT(FoliageRowImpl);
 
-void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out) {
-  HWY_DYNAMIC_DISPATCH(FoliageRowImpl)(points, variations, bases, count, out);
+void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, const float* leaf_shades,
+                        size_t count, Vec3f* out) {
+  HWY_DYNAMIC_DISPATCH(FoliageRowImpl)(points, variations, bases, leaf_shades, count, out);
 }
 
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,

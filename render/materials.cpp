@@ -52,7 +52,8 @@ Vec3f bark(const SurfacePoint& s, const Vec3f& base, float streak_depth, float l
 Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
   const Vec3f& p = s.position;
   const float scale = kFoliageMottleScale;
-  return foliage_albedo(base, s.variation, value_noise3(p.x() * scale, p.y() * scale, p.z() * scale, kFoliageMottleSalt));
+  return foliage_albedo(base, s.variation, value_noise3(p.x() * scale, p.y() * scale, p.z() * scale, kFoliageMottleSalt),
+                        s.leaf_shade);
 }
 
 /// Grass: `fresh` with `dry` patches across the ground, lighter towards the blade tip (v = 0).
@@ -136,8 +137,12 @@ bool plain_foliage_base(Material m, Vec3f& base) {
   }
 }
 
-Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle) {
-  return base.cwiseProduct(variation_tint(variation)) * (0.8f + 0.4f * mottle);
+float leaf_brightness(uint8_t alpha) {
+  return alpha >= 128 && alpha < 255 ? 0.75f + 0.5f * float(alpha - 128) / 126.0f : 1.0f;
+}
+
+Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle, float leaf_shade) {
+  return base.cwiseProduct(variation_tint(variation)) * (0.8f + 0.4f * mottle) * leaf_shade;
 }
 
 Vec3f material_albedo(const SurfacePoint& s) {

@@ -19,7 +19,12 @@ struct SurfacePoint {
   Material material;   ///< Which procedural material.
   uint32_t variation;  ///< Per-instance variation seed.
   float fallen_leaves = 0.0f;  ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
+  float leaf_shade = 1.0f;     ///< The brightness of the leaf under the point (leaf_brightness).
 };
+
+/// Brightness of one leaf of a foliage mask against its tree's from the alpha of its texel:
+/// 0.75 … 1.25 for alpha 128 … 254 (a leaf's own value), 1 for anything else (255: no per-leaf value).
+float leaf_brightness(uint8_t alpha);
 
 /// Linear-RGB diffuse albedo of a surface point: a pure function of the point (no state).
 Vec3f material_albedo(const SurfacePoint& s);
@@ -29,16 +34,18 @@ inline constexpr float kFoliageMottleScale = 6.0f;
 inline constexpr uint32_t kFoliageMottleSalt = kFoliage + 1;  ///< The mottle's salt.
 
 /// True when material m's albedo is plain foliage: `base` (set) tinted per instance and mottled,
-/// foliage_albedo(base, variation, value_noise3(kFoliageMottleScale p, kFoliageMottleSalt)).
+/// foliage_albedo(base, variation, value_noise3(kFoliageMottleScale p, kFoliageMottleSalt), leaf_shade).
 bool plain_foliage_base(Material m, Vec3f& base);
 
-/// Albedo of plain foliage of colour `base` on the instance of `variation` where its mottle noise is `mottle`.
-Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle);
+/// Albedo of plain foliage of colour `base` on the instance of `variation` where its mottle noise is
+/// `mottle`, on a leaf of brightness `leaf_shade`.
+Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle, float leaf_shade);
 
-/// Plain-foliage albedo of `count` points (positions, instance variations, base colours) into
+/// Plain-foliage albedo of `count` points (positions, instance variations, base colours, leaf shades) into
 /// out[i]: material_albedo's value for a point of a plain-foliage material of that base, one point
 /// per SIMD lane with the scalar operations in their order (the same bits on every Highway target).
-void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, size_t count, Vec3f* out);
+void foliage_albedo_row(const Vec3f* points, const uint32_t* variations, const Vec3f* bases, const float* leaf_shades,
+                        size_t count, Vec3f* out);
 
 /// Forest floor (Material::Ground): leaf and needle litter with grassy and mossy patches and a
 /// little bare soil, blended by noise and slope; leaf-sized detail fades out where one pixel

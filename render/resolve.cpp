@@ -33,6 +33,7 @@ void write_miss(GBuffer& g, size_t i) {
   g.base_color[i] = 0;
   g.instance_id[i] = 0;
   g.variation[i] = 0;
+  g.leaf[i] = 0;
 }
 
 /// World-space data of one (instance, triangle) pair, prepared once and reused by every pixel
@@ -154,6 +155,10 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.base_color[i] = h.part->base_color ? pack_srgb8(h.part->base_color->albedo(uv.x(), uv.y())) : 0;
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;
+  const AlphaMask* mask = h.part->mask.get();
+  g.leaf[i] = mask ? mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height) * mask->width +
+                                        AlphaMask::texel(uv.x(), mask->width))]
+                   : 0;
 }
 
 }  // namespace

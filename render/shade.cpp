@@ -109,6 +109,7 @@ struct RowTerms {
   std::vector<uint32_t> foliage_at; ///< Pixels of the row with plain foliage.
   std::vector<Vec3f> foliage_p;     ///< Their positions,
   std::vector<uint32_t> foliage_variation;  ///< instance variations,
+  std::vector<float> foliage_leaf;  ///< leaf shades,
   std::vector<Vec3f> foliage_base;  ///< base colours
   std::vector<Vec3f> foliage_out;   ///< and albedos.
   uint64_t bare_soil = 0;           ///< Ground pixels with a bare-soil weight >= 0.5 (all rows evaluated).
@@ -136,6 +137,7 @@ struct RowTerms {
     foliage_at.clear();
     foliage_p.clear();
     foliage_variation.clear();
+    foliage_leaf.clear();
     foliage_base.clear();
     Vec3f base;
     for (size_t u = 0; u < w; ++u) {
@@ -149,11 +151,12 @@ struct RowTerms {
         foliage_at.push_back(uint32_t(u));
         foliage_p.push_back(g.position[row + u]);
         foliage_variation.push_back(g.variation[row + u]);
+        foliage_leaf.push_back(leaf_brightness(g.leaf[row + u]));
         foliage_base.push_back(base);
       }
     }
     foliage_out.resize(foliage_at.size());
-    foliage_albedo_row(foliage_p.data(), foliage_variation.data(), foliage_base.data(), foliage_at.size(),
+    foliage_albedo_row(foliage_p.data(), foliage_variation.data(), foliage_base.data(), foliage_leaf.data(), foliage_at.size(),
                        foliage_out.data());
     for (size_t k = 0; k < foliage_at.size(); ++k) foliage[foliage_at[k]] = foliage_out[k];
     gather_out.resize(ground_at.size());
@@ -175,7 +178,8 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
                              const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
-  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves};
+  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves,
+                       leaf_brightness(g.leaf[i])};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f base;
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])

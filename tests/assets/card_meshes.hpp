@@ -1,6 +1,6 @@
 #pragma once
 /// @file Test meshes of alpha-masked cards, alone or with a solid part (LOD and card-thinning tests).
-#include "assets/alpha_masks.hpp"
+#include "assets/foliage_sprays.hpp"
 #include "assets/mesh_builder.hpp"
 #include "assets/strips.hpp"
 
@@ -9,7 +9,7 @@ namespace silva::assets::test {
 /// `cards` unit cards (1 m x 1 m, 2 triangles each) 3 m apart along x, in one masked part.
 inline Mesh row_of_cards(int cards) {
   MeshBuilder b;
-  b.begin_part(Role::TreeCanopy, Material::Leaves, beech_leaves_mask(), true);
+  b.begin_part(Role::TreeCanopy, Material::Leaves, beech_spray(1.0f), true);
   for (int i = 0; i < cards; ++i) add_card(b, Vec3f(float(3 * i), 0, 0), Vec3f(0.5f, 0, 0), Vec3f(0, 0, 0.5f));
   return b.finish();
 }

@@ -17,6 +17,7 @@ std::shared_ptr<const AlphaMask> checker_mask() {
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) m->alpha.push_back((x + y) % 2 == 0 ? 255 : 0);
   m->cutoff = 0.5f;
+  m->feature_length = 0.25f;
   return m;
 }
 
@@ -134,6 +135,8 @@ TEST_F(GltfWriterTest, ParsesBackWithTinygltf) {
   EXPECT_EQ(needles.name, "needles");
   EXPECT_EQ(needles.alphaMode, "MASK");
   EXPECT_EQ(needles.alphaCutoff, 0.5);
+  EXPECT_EQ(needles.extras.Get("leaf_length_uv").GetNumberAsDouble(), 0.25);
+  EXPECT_FALSE(bark.extras.IsObject());
   EXPECT_TRUE(needles.doubleSided);
   const int tex = needles.pbrMetallicRoughness.baseColorTexture.index;
   ASSERT_GE(tex, 0);

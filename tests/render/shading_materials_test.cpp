@@ -138,6 +138,7 @@ TEST(ShadingMaterials, FoliageRowsAreMaterialAlbedoBitForBitOnEveryHighwayTarget
   const Material kinds[] = {Material::Needles, Material::LeavesBirch, Material::NeedlesSpruce, Material::DeadBracken};
   std::vector<Vec3f> p, base;
   std::vector<uint32_t> variation;
+  std::vector<float> leaf;
   std::vector<Vec3f> want;
   for (int i = 0; i < 53; ++i) {  // odd count: full vectors plus a tail; negative coordinates floor downwards
     const Material m = kinds[i % 4];
@@ -146,13 +147,15 @@ TEST(ShadingMaterials, FoliageRowsAreMaterialAlbedoBitForBitOnEveryHighwayTarget
     Vec3f b;
     ASSERT_TRUE(plain_foliage_base(m, b));
     base.push_back(b);
-    want.push_back(material_albedo(SurfacePoint{p.back(), Vec3f::UnitZ(), Vec2f::Zero(), m, variation.back()}));
+    leaf.push_back(leaf_brightness(uint8_t(100 + i * 3)));  // below, across and above the per-leaf alphas
+    want.push_back(material_albedo(SurfacePoint{p.back(), Vec3f::UnitZ(), Vec2f::Zero(), m, variation.back(), 0.0f,
+                                                leaf.back()}));
   }
   for (int64_t target : test::highway_targets()) {
     const test::PinnedTarget pinned(target);
     SCOPED_TRACE(hwy::TargetName(target));
     std::vector<Vec3f> out(p.size());
-    foliage_albedo_row(p.data(), variation.data(), base.data(), p.size(), out.data());
+    foliage_albedo_row(p.data(), variation.data(), base.data(), leaf.data(), p.size(), out.data());
     for (size_t i = 0; i < p.size(); ++i) EXPECT_EQ(out[i], want[i]) << i;
   }
 }
@@ -165,9 +168,20 @@ TEST(ShadingMaterials, PlainFoliageIsItsBaseTintedAndMottled) {
   ASSERT_TRUE(plain_foliage_base(Material::LeavesBirch, base));
   const SurfacePoint s{Vec3f(1.5f, -2.25f, 7.0f), Vec3f::UnitZ(), Vec2f::Zero(), Material::LeavesBirch, 12345};
   const Vec3f q = s.position * kFoliageMottleScale;
-  EXPECT_EQ(material_albedo(s), foliage_albedo(base, s.variation, value_noise3(q.x(), q.y(), q.z(), kFoliageMottleSalt)));
-  EXPECT_NE(foliage_albedo(base, 1, 0.5f), foliage_albedo(base, 2, 0.5f));  // tinted per instance
-  EXPECT_GT(foliage_albedo(base, 1, 1.0f).sum(), foliage_albedo(base, 1, 0.0f).sum());
+  EXPECT_EQ(material_albedo(s),
+            foliage_albedo(base, s.variation, value_noise3(q.x(), q.y(), q.z(), kFoliageMottleSalt), 1.0f));
+  EXPECT_NE(foliage_albedo(base, 1, 0.5f, 1.0f), foliage_albedo(base, 2, 0.5f, 1.0f));  // tinted per instance
+  EXPECT_GT(foliage_albedo(base, 1, 1.0f, 1.0f).sum(), foliage_albedo(base, 1, 0.0f, 1.0f).sum());
+  EXPECT_EQ(foliage_albedo(base, 1, 0.5f, 1.25f), foliage_albedo(base, 1, 0.5f, 1.0f) * 1.25f);  // a brighter leaf
+}
+
+TEST(ShadingMaterials, LeafBrightnessComesFromTheMaskAlpha) {
+  EXPECT_EQ(leaf_brightness(0), 1.0f);
+  EXPECT_EQ(leaf_brightness(127), 1.0f);
+  EXPECT_EQ(leaf_brightness(255), 1.0f);  // binary masks keep their look
+  EXPECT_EQ(leaf_brightness(128), 0.75f);
+  EXPECT_EQ(leaf_brightness(254), 1.25f);
+  EXPECT_FLOAT_EQ(leaf_brightness(191), 1.0f);
 }
 
 }  // namespace
