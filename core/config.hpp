@@ -58,7 +58,7 @@ struct CameraConfig {
   double near = 0.05;             ///< camera.near (m)
   double far = 150;               ///< camera.far (m)
   double ground_height = 1.5;     ///< camera.ground_height (m above ground)
-  double aerial_height = 15;      ///< camera.aerial_height (m above ground)
+  double aerial_height = 10;      ///< camera.aerial_height (m above the canopy top, or the ground)
   double aerial_pitch_deg = -45;  ///< camera.aerial_pitch_deg
   bool antialias = true;          ///< camera.antialias: edge filter on RGB (labels stay exact)
   bool noise = true;              ///< camera.noise: shot + read sensor noise on RGB

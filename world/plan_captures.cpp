@@ -56,6 +56,20 @@ PlannedFrame autopilot_frame(const WorldContext& ctx, int i, size_t k, double s)
   return f;
 }
 
+/// Eye height at (x, y): the camera's height above the ground, or for aerial captures
+/// camera.aerial_height above the top of the canopy within kAerialCanopyMargin (above the ground
+/// where no crown reaches); `probe` must hold the trees around (x, y).
+double eye_z(const WorldContext& ctx, const ClearanceProbe& probe, double x, double y) {
+  const double ground = terrain_height(ctx.terrain, x, y), height = camera_height_and_pitch(ctx.config).first;
+  if (!ctx.config.captures.aerial) return ground + height;
+  return std::max(ground, probe.canopy_top(x, y, kAerialCanopyMargin)) + height;
+}
+
+/// Search radius of a probe that must also see the crowns over an aerial eye.
+double probe_radius(const WorldContext& ctx, double radius) {
+  return ctx.config.captures.aerial ? radius + kAerialCanopyMargin : radius;
+}
+
 /// Offsets of the spiral around a random draw: ring by ring outwards, the draw itself first.
 const std::vector<Eigen::Vector2d>& spiral_offsets() {
   static const std::vector<Eigen::Vector2d> offsets = [] {
@@ -71,19 +85,19 @@ const std::vector<Eigen::Vector2d>& spiral_offsets() {
 }
 
 /// The first clear spot of the spiral around (x, y) inside the capture region on walkable
-/// ground, as an offset index, or -1.
-int clear_spiral_spot(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, double x,
-                      double y, double height) {
+/// ground: its offset index and eye, or index -1.
+std::pair<int, Vec3d> clear_spiral_spot(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns,
+                                        double x, double y) {
   const double radius = kSpiralRings * kPoseSearchStep, half = 0.5 * ctx.config.world.extent;
-  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, x, y, radius);
+  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, x, y, probe_radius(ctx, radius));
   const auto& offsets = spiral_offsets();
   for (size_t k = 0; k < offsets.size(); ++k) {
     const double cx = x + offsets[k].x(), cy = y + offsets[k].y();
     if (std::abs(cx) > half || std::abs(cy) > half || !walkable(ctx, cx, cy)) continue;
-    if (probe.clear(Vec3d(cx, cy, terrain_height(ctx.terrain, cx, cy) + height), ctx.config.captures.aerial))
-      return int(k);
+    const Vec3d eye(cx, cy, eye_z(ctx, probe, cx, cy));
+    if (probe.clear(eye, ctx.config.captures.aerial)) return {int(k), eye};
   }
-  return -1;
+  return {-1, Vec3d::Zero()};
 }
 }  // namespace
 
@@ -109,34 +123,48 @@ void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<Pl
   const size_t yaws = ctx.config.captures.autopilot_yaws.size();
   const double length = ctx.trail.nav.length();
   const bool aerial = ctx.config.captures.aerial;
+  const auto lift = [&](size_t first, double z) {
+    for (size_t k = 0; k < yaws; ++k) frames[first + k].camera.camera_to_world(2, 3) = z;
+  };
   for (size_t first = 0; first + yaws <= frames.size(); first += yaws) {
     const double s0 = *frames[first].trail_s;
-    const Vec3d eye = frames[first].camera.position();
-    if (ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), 0.0).clear(eye, aerial)) continue;
-    const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), kTrailSearchReach);
-    std::optional<double> found;
+    const Vec3d trail_eye = frames[first].camera.position();
+    const ClearanceProbe here =
+        ClearanceProbe::around(ctx, cache, crowns, trail_eye.x(), trail_eye.y(), probe_radius(ctx, 0.0));
+    const Vec3d eye(trail_eye.x(), trail_eye.y(), eye_z(ctx, here, trail_eye.x(), trail_eye.y()));
+    lift(first, eye.z());
+    if (here.clear(eye, aerial)) continue;
+    const ClearanceProbe probe =
+        ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), probe_radius(ctx, kTrailSearchReach));
+    std::optional<Vec3d> found;  // arc length, -, eye height
     for (int step = 1; step <= int(kTrailSearchReach / kPoseSearchStep) && !found; ++step)
       for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
         if (s < 0.0 || s > length) continue;
         const Vec3d p = ctx.trail.nav.position(s);
-        const double z = terrain_height(ctx.terrain, p.x(), p.y()) + camera_height_and_pitch(ctx.config).first;
+        const double z = eye_z(ctx, probe, p.x(), p.y());
         if (probe.clear(Vec3d(p.x(), p.y(), z), aerial)) {
-          found = s;
+          found = Vec3d(s, 0.0, z);
           break;
         }
       }
     for (size_t k = 0; k < yaws; ++k) {
       PlannedFrame& f = frames[first + k];
-      if (found) f = autopilot_frame(ctx, f.frame / int(yaws), k, *found);
+      if (found) f = autopilot_frame(ctx, f.frame / int(yaws), k, found->x());
       f.pose_fix = found ? PoseFix::Moved : PoseFix::Unresolvable;
     }
+    if (found) lift(first, found->z());
   }
 }
 
 Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance) {
   const int yaws = int(ctx.config.captures.autopilot_yaws.size());
   const double s = std::clamp(*f.trail_s + distance, 0.0, ctx.trail.nav.length());
-  return autopilot_frame(ctx, f.frame / yaws, size_t(f.frame % yaws), s).camera.camera_to_world;
+  const auto trail_pose = [&](double at) {
+    return autopilot_frame(ctx, f.frame / yaws, size_t(f.frame % yaws), at).camera.camera_to_world;
+  };
+  Mat4d pose = trail_pose(s);
+  pose(2, 3) += f.camera.camera_to_world(2, 3) - trail_pose(*f.trail_s)(2, 3);  // an aerial eye's lift
+  return pose;
 }
 
 void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& frames) {
@@ -164,11 +192,9 @@ std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache
       if (!walkable(ctx, x, y)) continue;
       if (!first) first = Vec3d(x, y, yaw);
       ++draws;
-      const int spot = clear_spiral_spot(ctx, cache, crowns, x, y, height);
+      const auto [spot, eye] = clear_spiral_spot(ctx, cache, crowns, x, y);
       if (spot < 0) continue;
-      const double px = x + spiral_offsets()[size_t(spot)].x(), py = y + spiral_offsets()[size_t(spot)].y();
-      frames.push_back(make_frame(ctx, "random", f, Vec3d(px, py, terrain_height(ctx.terrain, px, py) + height), yaw,
-                                  pitch, 0.0, c.captures.aerial));
+      frames.push_back(make_frame(ctx, "random", f, eye, yaw, pitch, 0.0, c.captures.aerial));
       frames.back().pose_fix = draws == 1 && spot == 0 ? PoseFix::Clear : PoseFix::Moved;
       break;
     }

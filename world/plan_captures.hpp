@@ -51,6 +51,9 @@ inline constexpr double kPoseSearchStep = 0.5;
 inline constexpr double kTrailSearchReach = 20.0;
 /// Rings of the spiral around a random draw (radius kSpiralRings * kPoseSearchStep).
 inline constexpr int kSpiralRings = 8;
+/// Horizontal distance (metres) within which a tree crown lies under an aerial camera: its eye keeps
+/// camera.aerial_height above the top of every such crown.
+inline constexpr double kAerialCanopyMargin = 5.0;
 
 /// Autopilot: n points evenly spaced by arc length over the whole nav spline, both ends
 /// included, one frame per (point, yaw); frame = i * yaws + k. Empty when the trail is off.
@@ -63,7 +66,8 @@ std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx);
 void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames);
 
 /// The camera-to-world pose of autopilot frame `f` moved `distance` metres along the trail (negative: back;
-/// kept within the trail), its yaw relative to the trail as before: where the camera is
+/// kept within the trail), its yaw relative to the trail and its height above the trail's ground as before (an
+/// aerial eye keeps its lift above the canopy): where the camera is
 /// distance / camera.autopilot_speed seconds after (or before) the frame.
 Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance);
 

@@ -81,6 +81,18 @@ ClearanceProbe ClearanceProbe::around(const WorldContext& ctx, ChunkCache& cache
                         y, radius);
 }
 
+double ClearanceProbe::canopy_top(double x, double y, double margin) const {
+  double top = -INFINITY;
+  for (const Vegetation& v : crowned_) {
+    const CrownProfile& p = crowns_[v.asset];
+    const double s = v.scale, d = std::hypot(x - v.position.x(), y - v.position.y());
+    for (size_t b = 0; b < p.radius.size(); ++b)
+      if (d <= s * p.radius[b] + margin)
+        top = std::max(top, v.position.z() + s * (p.z_min + double(p.band) * double(b + 1)));
+  }
+  return top;
+}
+
 bool ClearanceProbe::near_crown(const Vegetation& v, const Vec3d& eye, double r) const {
   const CrownProfile& p = crowns_[v.asset];
   const double s = v.scale;

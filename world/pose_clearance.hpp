@@ -66,6 +66,9 @@ class ClearanceProbe {
   bool column_clear(const Vec3d& eye) const;
   /// The first nearby object whose solid proxy meets a sphere of radius `radius` about `point`, if any.
   const Vegetation* solid_at(const Vec3d& point, double radius) const;
+  /// Top of the canopy over (x, y): the highest crown band of a nearby tree whose crown reaches within
+  /// `margin` horizontally of (x, y), in world z; -infinity when no crown does.
+  double canopy_top(double x, double y, double margin) const;
 
  private:
   /// True when the camera shape (column or sphere) at `eye` keeps captures.clearance from every solid proxy.

@@ -17,7 +17,8 @@ inline constexpr double kGravity = 9.81;
 inline constexpr double kTrajectoryKnotStep = 0.25;
 
 /// Height above the ground and pitch (degrees) of autopilot, random and trajectory cameras: camera.aerial_height
-/// and aerial_pitch_deg with captures.aerial, else the rig's camera height (rig_camera_height) and its preset's tilt.
+/// and aerial_pitch_deg with captures.aerial (autopilot and random add the canopy under the eye:
+/// plan_captures.hpp), else the rig's camera height (rig_camera_height) and its preset's tilt.
 std::pair<double, double> camera_height_and_pitch(const Config& c);
 
 /// The camera's state at one time of the walk.

@@ -117,7 +117,7 @@ std::vector<ConfigKey> build_schema() {
        above(0, 1e6), {}, [](Config& c) -> FieldRef { return &c.camera.far; }},
       {"camera.ground_height", T::Float, "ground camera height above the terrain, metres",
        above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.ground_height; }},
-      {"camera.aerial_height", T::Float, "aerial camera height above the terrain, metres",
+      {"camera.aerial_height", T::Float, "aerial camera height above the canopy top within 5 m (autopilot, random; else above the terrain), metres",
        above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_height; }},
       {"camera.aerial_pitch_deg", T::Float, "aerial camera pitch, degrees (ground pitch is 0)",
        between(-90, 90), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_pitch_deg; }},

@@ -185,12 +185,16 @@ function setWalk(walk) {
 }
 $('walk').addEventListener('click', () => setWalk(!silva.walk));
 
+// Height (m) of the canopy the aerial view flies over: captures measure camera.aerial_height from the
+// crowns under the camera; the page, which does not know them, from a mature stand's top.
+const kViewCanopyTop = 30;
+
 function aerial() {
   if (!config) return;
-  const high = !silva.walk && silva.pose.z > silva.ground + config.camera.aerial_height / 2;
+  const high = !silva.walk && silva.pose.z > silva.ground + kViewCanopyTop / 2;
   if (high) { setWalk(true); silva.pose.pitch = 0; return; }
   setWalk(false);
-  silva.pose.z = silva.ground + config.camera.aerial_height;
+  silva.pose.z = silva.ground + kViewCanopyTop + config.camera.aerial_height;
   silva.pose.pitch = config.camera.aerial_pitch_deg;
   moved();
 }
