@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Renders the lighting contact sheet (docs/lighting-sheet.png): one trail view from the ground and
 one from the air for every time of day (day, dusk, night) under every weather (clear, overcast,
-mist, rain, snow) in summer, then the day's ground view in autumn and winter; RGB only, in a grid
+mist, rain in summer; snow in winter, which lying snow needs), then the day's ground view in autumn and winter; RGB only, in a grid
 with the rows labelled. Needs numpy and OpenCV (cv2).
 
 usage: scripts/lighting_sheet.py [--silva build/silva] [--scratch /tmp/silva-lighting] [--out docs/lighting-sheet.png]
@@ -29,7 +29,7 @@ def render(silva, scratch, time, weather, view, season):
     subprocess.run([str(silva), "generate", "--config", str(ROOT / "configs/demo.toml"), "--seed", str(SEED),
                     "--quiet", "--overwrite", "--out", str(out),
                     "--set", f"lighting.time_of_day={time}", "--set", f"lighting.weather={weather}",
-                    "--set", f"vegetation.season={season}",
+                    "--set", f"vegetation.season={'winter' if weather == 'snow' else season}",  # snow needs winter
                     "--set", f"captures.aerial={'true' if view == 'aerial' else 'false'}",
                     "--set", 'captures.sequences=["autopilot"]', "--set", "captures.autopilot_points=3",
                     "--set", "captures.autopilot_yaws=[0.0]", "--set", f"output.resolution={TILE_W}x{TILE_H}",

@@ -72,6 +72,26 @@ std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded) {
   return names;
 }
 
+/// Lying snow (a weather whose snow_cover is above 0: lighting.weather, or a weather lighting.randomize may
+/// draw) needs vegetation.season = "winter": snow on leafy crowns is no real look, and the season, which
+/// shapes the world, is not the weather's to change.
+void check_snow_season(const std::string& where, const Config& c, const LoadedConfig& loaded) {
+  if (c.vegetation.season == "winter") return;
+  const auto presets = parse_weather_tables(loaded.weather_presets, loaded.source);
+  const auto snowy = [&](const std::string& name) {
+    const auto it = presets.find(name);
+    return it != presets.end() && it->second.snow_cover > 0.0f;
+  };
+  const LightingRandomizeConfig& r = c.lighting.randomize;
+  std::string key;
+  if (!r.enabled && snowy(c.lighting.weather)) key = "lighting.weather = \"" + c.lighting.weather + "\"";
+  for (size_t i = 0; r.enabled && key.empty() && i < r.weathers.size(); ++i)
+    if (snowy(r.weathers[i]) && r.weather_weights[i] > 0.0) key = "lighting.randomize.weathers's \"" + r.weathers[i] + "\"";
+  if (!key.empty())
+    throw InputError(where + ": " + key + " lays snow, which needs vegetation.season = \"winter\" (got \"" +
+                     c.vegetation.season + "\"): bare deciduous crowns; snow on leaves is no real look");
+}
+
 std::vector<std::string> weather_preset_names(const LoadedConfig& loaded) {
   std::vector<std::string> names;
   for (const auto& [name, weather] : parse_weather_tables(loaded.weather_presets, loaded.source)) {
@@ -149,6 +169,7 @@ void check_config(const LoadedConfig& loaded) {
                      allowed + ", or define [lighting.weather_presets." + c.lighting.weather + "])");
   }
   check_lighting_randomize(where, c.lighting.randomize, weathers);
+  check_snow_season(where, c, loaded);
 }
 
 }  // namespace silva::pipeline

@@ -122,7 +122,7 @@ TEST(GenerateLighting, WeatherLeavesLabelsAndDepthByteIdentical) {
   const auto labels = [&](const std::string& weather) {
     std::vector<std::string> args =
         tiny_run_args(dir / weather, 23, R"(["rgb","semantic","semantic_color","instance","depth","depth_exr","normal"])");
-    args.insert(args.end(), {"--set", "lighting.weather=" + weather});
+    args.insert(args.end(), {"--set", "lighting.weather=" + weather, "--set", "vegetation.season=winter"});  // snow's
     const ProcessResult r = run_silva(args, dir);
     EXPECT_EQ(r.code, 0) << r.err;
     std::map<std::string, std::string> files = folder_files(dir / weather);
@@ -149,8 +149,9 @@ TEST(GenerateLighting, WeatherLeavesLabelsAndDepthByteIdentical) {
 TEST(GenerateLighting, EveryWeatherPresetRoundTripsThroughValidatePrint) {
   const fs::path dir = fresh_test_dir();
   for (const char* weather : {"clear", "overcast", "mist", "rain", "snow"}) {
-    const ProcessResult first =
-        run_silva({"validate", "--set", "seed=7", "--set", std::string("lighting.weather=") + weather, "--print"}, dir);
+    const ProcessResult first = run_silva({"validate", "--set", "seed=7", "--set", std::string("lighting.weather=") + weather,
+                                           "--set", "vegetation.season=winter", "--print"},
+                                          dir);
     ASSERT_EQ(first.code, 0) << first.err;
     EXPECT_NE(first.out.find(std::string("weather = \"") + weather + "\""), std::string::npos) << first.out;
     const fs::path printed = dir / (std::string(weather) + ".toml");

@@ -89,7 +89,37 @@ TEST(ConfigChecks, TimeOfDayNamesAPreset) {
   EXPECT_EQ(check_message([](Config& c) { c.lighting.weather = "hail"; }),
             "a.toml: lighting.weather = \"hail\" is not a weather preset (allowed: clear, mist, overcast, rain, snow, "
             "or define [lighting.weather_presets.hail])");
-  EXPECT_EQ(check_message([](Config& c) { c.lighting.weather = "snow"; }), "");
+  EXPECT_EQ(check_message([](Config& c) { c.lighting.weather = "snow"; }),
+            "a.toml: lighting.weather = \"snow\" lays snow, which needs vegetation.season = \"winter\" (got "
+            "\"summer\"): bare deciduous crowns; snow on leaves is no real look");
+  EXPECT_EQ(check_message([](Config& c) {
+              c.lighting.weather = "snow";
+              c.vegetation.season = "winter";
+            }),
+            "");
+}
+
+TEST(ConfigChecks, RandomizedSnowNeedsWinterToo) {
+  const auto snow_drawn = [](Config& c) {
+    c.lighting.randomize.enabled = true;
+    c.lighting.randomize.weathers = {"clear", "snow"};
+    c.lighting.randomize.weather_weights = {1, 1};
+  };
+  EXPECT_EQ(check_message(snow_drawn),
+            "a.toml: lighting.randomize.weathers's \"snow\" lays snow, which needs vegetation.season = \"winter\" "
+            "(got \"summer\"): bare deciduous crowns; snow on leaves is no real look");
+  EXPECT_EQ(check_message([&](Config& c) {  // a snow preset that is never drawn is no snow
+              snow_drawn(c);
+              c.lighting.randomize.weather_weights = {1, 0};
+            }),
+            "");
+  EXPECT_EQ(check_message([&](Config& c) {  // randomize replaces lighting.weather
+              snow_drawn(c);
+              c.lighting.randomize.weathers = {"clear"};
+              c.lighting.randomize.weather_weights = {1};
+              c.lighting.weather = "snow";
+            }),
+            "");
 }
 
 TEST(ConfigChecks, OutputDirIsSet) {
