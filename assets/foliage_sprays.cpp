@@ -18,6 +18,8 @@ constexpr float kLeafTexels = 12.0f;
 constexpr int kMinSpraySize = 256, kMaxSpraySize = 1024;
 /// Twig half-width at the spray's base, metres (thinning towards the tips and down the orders).
 constexpr float kTwigHalfWidth = 0.0025f;
+/// Half-width of a bare twig per unit of its length (a 1 m branch is 2 cm thick at its base).
+constexpr float kBareTwigTaper = 0.01f;
 /// Deepest order of side twigs.
 constexpr int kMaxTwigOrder = 3;
 /// Bisection steps towards a spray's coverage.
@@ -35,7 +37,8 @@ class SprayDrawer {
     len = std::min(len, room(a, deg));
     if (len < std::min(1.5f * L_, 0.3f)) return;
     const Vec2f b = stroke_towards(a, deg, len);
-    const float w = std::max(kTwigHalfWidth / side_m_ / float(1 + order), 0.6f * texel_);
+    float w = std::max(kTwigHalfWidth / side_m_ / float(1 + order), 0.6f * texel_);
+    if (leaf_.arrangement == SprayLeaf::Arrangement::Bare) w = std::max(w, kBareTwigTaper * len);  // thicker where longer
     out_.push_back({a, b, w, std::max(0.4f * w, 0.5f * texel_), Stroke::Shape::Tapered});
     const float gap = leaf_.twig_gap * L_;
     if (order < kMaxTwigOrder && len > 3.0f * gap) {
@@ -46,7 +49,7 @@ class SprayDrawer {
         twig(stroke_towards(a, deg, t), deg + side * rng_.range(45.0f, 60.0f), child, order + 1);
       }
     }
-    leaves_along(a, deg, len);
+    if (leaf_.arrangement != SprayLeaf::Arrangement::Bare) leaves_along(a, deg, len);
   }
 
  private:
@@ -93,6 +96,7 @@ class SprayDrawer {
           leaf(p, deg + turn, l);
           leaf(p, deg - turn + rng_.range(-6.0f, 6.0f), l * rng_.range(0.9f, 1.1f));
           break;
+        case SprayLeaf::Arrangement::Bare: break;
         case SprayLeaf::Arrangement::Rosette: {
           const Vec2f shoot = stroke_towards(p, deg + side * turn, 0.12f * l);
           for (int k = 0; k < 11; ++k)
@@ -142,6 +146,7 @@ constexpr SprayLeaf kBeech{.length_m = 0.075f, .half_width = 0.3f, .angle_deg = 
                            .shape = Shape::Round, .twig_gap = 1.8f, .coverage = 0.37f};
 constexpr SprayLeaf kBirch{.length_m = 0.05f, .half_width = 0.33f, .angle_deg = 55.0f, .spacing = 0.55f, .from = 0.1f,
                            .shape = Shape::Pointed, .twig_gap = 2.0f, .coverage = 0.21f};
+constexpr SprayLeaf kTwigs{.length_m = 0.02f, .angle_deg = 50.0f, .arrangement = Bare, .twig_gap = 1.6f, .coverage = 0.1f};
 constexpr SprayLeaf kOak{.length_m = 0.10f, .half_width = 0.28f, .angle_deg = 50.0f, .spacing = 0.35f, .from = 0.3f,
                          .lobes = 3, .shape = Shape::Round, .twig_gap = 1.8f, .coverage = 0.25f};
 
@@ -188,5 +193,15 @@ std::shared_ptr<const AlphaMask> larch_spray(float card_side_m) { return family<
 std::shared_ptr<const AlphaMask> beech_spray(float card_side_m) { return family<kBeech, 4>(card_side_m); }
 std::shared_ptr<const AlphaMask> birch_spray(float card_side_m) { return family<kBirch, 5>(card_side_m); }
 std::shared_ptr<const AlphaMask> oak_spray(float card_side_m) { return family<kOak, 6>(card_side_m); }
+std::shared_ptr<const AlphaMask> bare_twig_spray(float card_side_m) { return family<kTwigs, 7>(card_side_m); }
+
+std::shared_ptr<const AlphaMask> bare_twigs_for(const AlphaMask* leafy) {
+  for (const MaskFamily leafy_family : {&beech_spray, &birch_spray, &oak_spray, &larch_spray})
+    for (int k = 0; k < kSprayClasses; ++k) {
+      const float side = kSprayClassSide * float(1 << k);
+      if (leafy_family(side).get() == leafy) return bare_twig_spray(side);
+    }
+  return nullptr;
+}
 
 }  // namespace silva::assets

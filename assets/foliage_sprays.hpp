@@ -16,6 +16,7 @@ struct SprayLeaf {
     Alternate,  ///< One leaf per step, sides alternating (broadleaves).
     Brush,      ///< A needle on both sides at every step (spruce, pine shoots).
     Rosette,    ///< Short shoots with a fan of needles on alternating sides (larch).
+    Bare,       ///< No leaves: the twigs alone (winter and dead crowns; length_m sets their spacing).
   };
   float length_m = 0.07f;        ///< Leaf or needle length, metres.
   float half_width = 0.28f;      ///< Half-width as a share of the length.
@@ -59,5 +60,11 @@ std::shared_ptr<const AlphaMask> beech_spray(float card_side_m);
 std::shared_ptr<const AlphaMask> birch_spray(float card_side_m);
 /// Common oak: 10 cm lobed leaves crowded towards the twig ends.
 std::shared_ptr<const AlphaMask> oak_spray(float card_side_m);
+/// Bare twigs (winter and dead crowns): the branching of a spray without its leaves.
+std::shared_ptr<const AlphaMask> bare_twig_spray(float card_side_m);
+
+/// The bare-twig spray for the card size a deciduous tree spray (beech, birch, oak, larch) was drawn
+/// for, or nullptr when `leafy` is none of them.
+std::shared_ptr<const AlphaMask> bare_twigs_for(const AlphaMask* leafy);
 
 }  // namespace silva::assets

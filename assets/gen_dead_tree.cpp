@@ -12,7 +12,7 @@ namespace {
 /// Bare dead twigs as cards on the finest branches.
 TreeLook dead_look(bool twigs) {
   TreeLook look{Material::BarkDead, Role::DeadTree, twigs, {}};
-  look.cards = {.mask = bare_twig_mask(), .material = Material::BarkDead, .role = Role::DeadTree,
+  look.cards = {.mask = nullptr, .family = bare_twig_spray, .material = Material::BarkDead, .role = Role::DeadTree,
                 .style = CardStyle::Spray, .half = 0.3f, .spacing = 0.4f, .start = 0.2f, .droop = 0.1f,
                 .level = 2, .max_cards = 800};
   return look;

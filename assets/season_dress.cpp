@@ -1,6 +1,7 @@
 #include "assets/season_dress.hpp"
 
 #include "assets/alpha_masks.hpp"
+#include "assets/foliage_sprays.hpp"
 
 namespace silva::assets {
 
@@ -27,7 +28,8 @@ void dress_for_season(Mesh& mesh, Season season) {
     } else if (!is_deciduous_foliage(part.material)) {
       continue;
     } else if (season == Season::Winter) {
-      part.mask = bare_twig_mask();
+      const auto twigs = bare_twigs_for(part.mask.get());  // trees: twigs at their cards' scale
+      part.mask = twigs ? twigs : bare_twig_mask();
       part.material = Material::BareTwigs;
     } else {
       part.material = part.material == Material::NeedlesLarch ? Material::AutumnNeedles : Material::AutumnLeaves;

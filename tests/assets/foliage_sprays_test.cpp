@@ -99,6 +99,19 @@ TEST(FoliageSprays, SpeciesCardsCarryTheirFamily) {
   EXPECT_EQ(common_oak().look.cards.family, &oak_spray);
 }
 
+TEST(FoliageSprays, BareTwigsMatchTheCardSizeOfTheLeavesTheyReplace) {
+  for (int k = 0; k < kSprayClasses; ++k) {
+    const float side = kSprayClassSide * float(1 << k);
+    for (const MaskFamily leafy : {&beech_spray, &birch_spray, &oak_spray, &larch_spray})
+      EXPECT_EQ(bare_twigs_for(leafy(side).get()), bare_twig_spray(side)) << side;
+    const auto twigs = bare_twig_spray(side);
+    EXPECT_NEAR(coverage(*twigs), 0.1, 0.03) << side;
+    EXPECT_TRUE(std::all_of(twigs->alpha.begin(), twigs->alpha.end(), [](uint8_t a) { return a == 0 || a == 255; }));
+  }
+  EXPECT_EQ(bare_twigs_for(spruce_spray(1.0f).get()), nullptr);  // evergreens keep their needles
+  EXPECT_EQ(bare_twigs_for(nullptr), nullptr);
+}
+
 TEST(MaskStrokes, AStrokeCoversItsLengthInTexels) {
   // Half-width 0.02 (5.12 texels) along y = 0.5 from x = 0.25 to 0.75 on 256 texels, with round ends: the
   // middle rows 127 and 128 (centres 0.002 off the axis) are opaque from texel 59 to 196.

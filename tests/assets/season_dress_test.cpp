@@ -5,6 +5,7 @@
 
 #include "assets/alpha_masks.hpp"
 #include "assets/factory.hpp"
+#include "assets/foliage_sprays.hpp"
 
 namespace silva::assets {
 namespace {
@@ -57,11 +58,20 @@ TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
 }
 
 TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {
-  for (const char* prefix : {"beech", "birch", "oak", "larch", "hazel"})
-    for (const MeshPart& p : cards(variant(prefix, Season::Winter))) {
-      EXPECT_EQ(p.material, Material::BareTwigs) << prefix;
-      EXPECT_EQ(p.mask, bare_twig_mask()) << prefix;
+  for (const char* prefix : {"beech", "birch", "oak", "larch", "hazel"}) {
+    const std::vector<MeshPart> summer = cards(variant(prefix, Season::Summer));
+    const std::vector<MeshPart> winter = cards(variant(prefix, Season::Winter));
+    ASSERT_EQ(winter.size(), summer.size()) << prefix;
+    for (size_t k = 0; k < winter.size(); ++k) {
+      EXPECT_EQ(winter[k].material, Material::BareTwigs) << prefix;
+      // Trees: twigs drawn for the same card size as the leaves they replace; the hazel: the small twig mask.
+      const auto twigs = bare_twigs_for(summer[k].mask.get());
+      EXPECT_EQ(winter[k].mask, prefix == std::string("hazel") ? bare_twig_mask() : twigs) << prefix;
+      if (prefix != std::string("hazel")) {
+        EXPECT_NE(twigs, nullptr) << prefix;
+      }
     }
+  }
   const Mesh summer = variant("pine", Season::Summer), winter = variant("pine", Season::Winter);
   ASSERT_EQ(cards(winter).size(), cards(summer).size());
   for (size_t k = 0; k < cards(winter).size(); ++k) {
