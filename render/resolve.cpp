@@ -156,8 +156,8 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;
   const AlphaMask* mask = h.part->mask.get();
-  g.leaf[i] = mask ? mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height) * mask->width +
-                                        AlphaMask::texel(uv.x(), mask->width))]
+  g.leaf[i] = mask ? mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height)) * size_t(mask->width) +
+                                  size_t(AlphaMask::texel(uv.x(), mask->width))]
                    : 0;
 }
 
