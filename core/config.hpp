@@ -84,6 +84,7 @@ struct VegetationConfig {
   double grid_spacing = 2.0;  ///< vegetation.grid_spacing (m)
   bool ground = true;         ///< vegetation.ground: grass/ferns on/off
   std::string season = "summer";  ///< vegetation.season: summer, autumn or winter
+  std::string forest_type = "mixed";  ///< vegetation.forest_type: a world/forest_types.hpp name or "random"
 };
 
 /// Terrain heightfield (`[terrain]`).

@@ -20,6 +20,7 @@ enum class Purpose : uint32_t {
   GroundCover = 15,
   ResolveMove = 16,
   ResolvePriority = 17,
+  ForestType = 18,
   AssetShape = 20,
   RandomPose = 30,
   SensorNoise = 40,

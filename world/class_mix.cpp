@@ -4,19 +4,20 @@ namespace silva::world {
 
 using assets::AssetKind;
 
-ClassMix class_mix(double density_percent, bool ground) {
+ClassMix class_mix(double density_percent, bool ground, const ForestType& forest) {
   const double d = density_percent / 100.0;
   ClassMix m{};
-  m[size_t(PointClass::Conifer)] = 0.5 * d;
-  m[size_t(PointClass::Broadleaf)] = 0.5 * d;
+  m[size_t(PointClass::Conifer)] = forest.conifer_share * d;
+  m[size_t(PointClass::Broadleaf)] = (1.0 - forest.conifer_share) * d;
   m[size_t(PointClass::DeadTree)] = 0.1 * d;
   m[size_t(PointClass::Stump)] = 0.1 * d;
-  m[size_t(PointClass::Shrub)] = 0.04 + 0.4 * d;
+  m[size_t(PointClass::Shrub)] = (0.04 + 0.4 * d) * forest.shrub_scale;
   m[size_t(PointClass::Rock)] = 0.015;
   m[size_t(PointClass::Log)] = 0.005 + 0.05 * d;
   double used = 0;
   for (size_t k = 0; k < size_t(PointClass::Ground); ++k) used += m[k];
-  m[size_t(ground ? PointClass::Ground : PointClass::Nothing)] = 1.0 - used;
+  m[size_t(PointClass::Ground)] = ground ? (1.0 - used) * forest.ground_share : 0.0;
+  m[size_t(PointClass::Nothing)] = 1.0 - used - m[size_t(PointClass::Ground)];
   return m;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "assets/library.hpp"
+#include "world/forest_types.hpp"
 
 namespace silva::world {
 
@@ -15,9 +16,10 @@ enum class PointClass : uint8_t { Conifer, Broadleaf, DeadTree, Stump, Shrub, Ro
 /// Probability of each PointClass at one grid point; sums to 1.
 using ClassMix = std::array<double, size_t(PointClass::Count)>;
 
-/// The mix for `density_percent` (1..25: percent of points holding a tree); with ground = false
-/// the ground-vegetation share holds nothing.
-ClassMix class_mix(double density_percent, bool ground);
+/// The mix for `density_percent` (1..25: percent of points holding a tree) in forest type `forest`
+/// (its conifer share of the trees, its shrub factor, its share of ground-vegetation points that are not
+/// bare); with ground = false the ground-vegetation share holds nothing.
+ClassMix class_mix(double density_percent, bool ground, const ForestType& forest = forest_types().front());
 
 /// Class of a point from a uniform draw u in [0, 1) (cumulative thresholds in enum order).
 PointClass pick_class(const ClassMix& mix, double u);

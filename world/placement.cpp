@@ -1,5 +1,6 @@
 #include "world/placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/rng.hpp"
@@ -50,8 +51,8 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
   const double s = cfg.terrain.chunk_size, gs = cfg.vegetation.grid_spacing;
   const int n = int(std::lround(s / gs));
   const double radius = kAdmissibleFraction * gs;
-  const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground);
-  const double fern_share = 0.35 + 2.0 * cfg.vegetation.density / 100.0;
+  const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground, *ctx.forest);
+  const double fern_share = std::clamp(0.35 + 2.0 * cfg.vegetation.density / 100.0 + ctx.forest->fern_bias, 0.0, 1.0);
   const double x0 = coord.i * s, y0 = coord.j * s;
   const double pad = ctx.trail.corridor_half_width() + std::max<double>(ctx.max_footprint, kGroundFootprint * kMaxScale);
   const auto trail_segments = trail_segments_near(ctx.trail, x0, y0, x0 + s, y0 + s, pad);

@@ -7,12 +7,17 @@
 
 namespace silva::world {
 
-SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed) {
+SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed, const ForestType& forest) {
   SpeciesStands s;
   std::array<std::vector<std::string>, size_t(AssetKind::Count)> names;
   for (uint32_t a = 0; a < library.assets.size(); ++a) {
     const assets::Asset& asset = library.assets[a];
     const std::string group = asset.source ? asset.source->generator : std::string();
+    const std::vector<std::string>* grown = asset.kind == AssetKind::ConiferTree     ? &forest.conifers
+                                            : asset.kind == AssetKind::BroadleafTree ? &forest.broadleaves
+                                            : asset.kind == AssetKind::Shrub         ? &forest.shrubs
+                                                                                     : nullptr;
+    if (grown && asset.source && !grows(*grown, group)) continue;  // user assets always grow
     auto& kind_names = names[size_t(asset.kind)];
     auto& kind_groups = s.groups[size_t(asset.kind)];
     const auto it = std::find(kind_names.begin(), kind_names.end(), group);

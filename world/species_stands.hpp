@@ -8,6 +8,7 @@
 
 #include "assets/library.hpp"
 #include "core/rng.hpp"
+#include "world/forest_types.hpp"
 
 namespace silva::world {
 
@@ -24,8 +25,10 @@ struct SpeciesStands {
   double offset_x = 0, offset_y = 0;  ///< Seeded offset of the stand noise.
 };
 
-/// Groups `library`'s assets and seeds the stand field from `seed`.
-SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed);
+/// Groups `library`'s assets and seeds the stand field from `seed`; conifers, broadleaves and shrubs
+/// only of the species `forest` grows (every one by default).
+SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed,
+                                  const ForestType& forest = forest_types().front());
 
 /// The asset an object of `kind` at (x, y) uses: its stand's dominant species with probability
 /// kDominantShare, else any species; then a uniform variant of that species. Draws from `rng`.

@@ -7,6 +7,7 @@
 #include "assets/library.hpp"
 #include "core/config.hpp"
 #include "core/timed_pose.hpp"
+#include "world/forest_types.hpp"
 #include "world/species_stands.hpp"
 #include "world/terrain.hpp"
 #include "world/trail.hpp"
@@ -22,6 +23,7 @@ struct WorldContext {
   const assets::AssetLibrary* library = nullptr;  ///< Placeable assets (not owned).
   TerrainField terrain;                        ///< Height function.
   Trail trail;                                 ///< The trail (enabled = false when off).
+  const ForestType* forest = nullptr;          ///< What grows (vegetation.forest_type, drawn for "random").
   SpeciesStands stands;                        ///< Assets grouped by species, and the stand field.
   std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
   float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.

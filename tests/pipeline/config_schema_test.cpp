@@ -19,7 +19,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "camera.read_noise_e", "camera.gain", "camera.vignetting", "camera.chromatic_aberration",
         "camera.depth_of_field", "camera.f_number", "camera.focus_distance", "camera.sensor_width_mm",
         "camera.motion_blur", "camera.shutter_s", "camera.autopilot_speed", "vegetation.density",
-        "vegetation.grid_spacing", "vegetation.ground", "vegetation.season", "terrain.max_elevation", "terrain.octaves",
+        "vegetation.grid_spacing", "vegetation.ground", "vegetation.season", "vegetation.forest_type", "terrain.max_elevation", "terrain.octaves",
         "terrain.lacunarity", "terrain.persistence", "terrain.frequency", "terrain.chunk_size",
         "terrain.vertex_spacing", "trail.enabled", "trail.width", "trail.control_points",
         "trail.control_spacing", "world.extent", "world.render_distance", "render.lod",
@@ -34,7 +34,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise", "trajectory.flow"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 89u);
+  EXPECT_EQ(names.size(), 90u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

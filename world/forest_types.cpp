@@ -1,0 +1,43 @@
+#include "world/forest_types.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "core/rng.hpp"
+
+namespace silva::world {
+
+const std::vector<ForestType>& forest_types() {
+  static const std::vector<ForestType> types = {
+      {.name = "mixed"},
+      // Even-aged Norway spruce: closed and dark, few shrubs, mostly bare needle litter with moss and ferns.
+      {.name = "spruce_plantation", .conifer_share = 1.0, .conifers = {"spruce"}, .shrub_scale = 0.25,
+       .ground_share = 0.35, .fern_bias = 0.15},
+      // Beech hall forest: tall beech over a bare leaf-litter floor, a little hazel.
+      {.name = "beech_hall", .conifer_share = 0.0, .broadleaves = {"beech"}, .shrubs = {"hazel"},
+       .shrub_scale = 0.3, .ground_share = 0.15},
+      // Pine heath: open Scots pine with some birch over bilberry and grass.
+      {.name = "pine_heath", .conifer_share = 0.85, .conifers = {"pine"}, .broadleaves = {"birch"},
+       .shrubs = {"bilberry"}, .shrub_scale = 3.0, .ground_share = 1.0, .fern_bias = -0.3},
+  };
+  return types;
+}
+
+const ForestType& forest_type_of(const std::string& name, uint64_t seed) {
+  const auto& types = forest_types();
+  if (name == "random") {
+    Rng rng(seed, 0, Purpose::ForestType);
+    return types[rng.below(uint32_t(types.size()))];
+  }
+  for (const ForestType& t : types)
+    if (t.name == name) return t;
+  std::string allowed;
+  for (const ForestType& t : types) allowed += t.name + ", ";
+  throw InputError("vegetation.forest_type = \"" + name + "\" is not a forest type (allowed: " + allowed + "random)");
+}
+
+bool grows(const std::vector<std::string>& list, const std::string& species) {
+  return list.empty() || std::find(list.begin(), list.end(), species) != list.end();
+}
+
+}  // namespace silva::world
