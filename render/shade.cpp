@@ -186,12 +186,14 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
                  : procedural_ground                   ? row.ground[size_t(u)]
                  : plain_foliage_base(s.material, base) ? row.foliage[size_t(u)]
                                                        : material_albedo(s);
-  if (look.active()) albedo = look.albedo(albedo, s);
+  const float puddle = look.active() ? look.puddle(s) : 0.0f;
+  if (look.active()) albedo = look.albedo(albedo, s, puddle);
   const MaterialResponse response = material_response(s.material);
   const Vec2f& slope = row.ground_slope[size_t(u)];
-  const Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
-                                    : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
-  const float roughness = look.active() ? look.roughness(response.roughness, n) : response.roughness;
+  Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
+                              : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
+  if (puddle > 0.0f) n = (n + (Vec3f::UnitZ() - n) * puddle).normalized();  // still water lies level
+  const float roughness = look.active() ? look.roughness(response.roughness, n, puddle) : response.roughness;
   return {albedo,       n,           s.normal,         view_dir,
           roughness,    response.f0, response.translucency, row.ao[size_t(u)],
           row.sun_visible[size_t(u)], row.fog_amount[size_t(u)], row.canopy[size_t(u)]};

@@ -115,6 +115,33 @@ TEST(ShadingBrdf, RainLowersRoughnessMostOnUpwardSurfaces) {
   EXPECT_LT(damp.roughness(0.85f, up), 0.85f);
 }
 
+TEST(ShadingBrdf, RainLeavesDarkMirrorPuddlesOnTheTrailOnly) {
+  WeatherPreset rain;
+  rain.wetness = 1.0f;
+  const WeatherLook wet(rain), dry(WeatherPreset{});
+  int puddles = 0, points = 0;
+  for (int i = 0; i < 80; ++i)
+    for (int j = 0; j < 80; ++j, ++points) {
+      SurfacePoint s{Vec3f(0.25f * float(i) - 7.0f, 0.25f * float(j) + 3.0f, 0.0f), Vec3f::UnitZ(), Vec2f::Zero(),
+                     Material::Trail, 1};
+      const float p = wet.puddle(s);
+      ASSERT_GE(p, 0.0f);
+      ASSERT_LE(p, 1.0f);
+      puddles += p > 0.5f ? 1 : 0;
+      EXPECT_EQ(dry.puddle(s), 0.0f);
+      s.material = Material::Ground;
+      EXPECT_EQ(wet.puddle(s), 0.0f);  // the forest floor soaks it up
+    }
+  const double share = double(puddles) / points;
+  EXPECT_GT(share, 0.08);
+  EXPECT_LT(share, 0.45);
+  const Vec3f up(0, 0, 1), mud(0.3f, 0.25f, 0.2f);
+  const SurfacePoint trail{Vec3f::Zero(), up, Vec2f::Zero(), Material::Trail, 1};
+  EXPECT_LT(wet.roughness(0.85f, up, 1.0f), 0.05f);
+  EXPECT_EQ(wet.roughness(0.85f, up, 0.0f), wet.roughness(0.85f, up));
+  EXPECT_TRUE((wet.albedo(mud, trail, 1.0f).array() < wet.albedo(mud, trail, 0.0f).array()).all());
+}
+
 TEST(ShadingBrdf, BarkAndRockReliefTiltsTheShadingNormalUpClose) {
   for (const Material m : {Material::BarkConifer, Material::BarkOak, Material::Rock, Material::LogBark}) {
     double tilt = 0;
