@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "silva_process.hpp"
+#include "world/forest_types.hpp"
 
 namespace silva::test {
 namespace {
@@ -47,6 +48,20 @@ TEST(GenerateOutput, JsonSummaryHoldsTheDocumentedFields) {
   EXPECT_EQ(manifest.at("frames"), nlohmann::json({{"autopilot", 3}, {"random", 2}}));
   EXPECT_EQ(manifest.at("seed"), 17);
   EXPECT_FALSE(manifest.at("config").at("output").contains("dir"));
+}
+
+TEST(GenerateOutput, TheCardNamesTheForestTypeARandomWorldDrew) {
+  const fs::path dir = fresh_test_dir();
+  std::vector<std::string> args = tiny_run_args(dir / "out", 19);
+  args.insert(args.end(), {"--set", "vegetation.forest_type=random"});
+  const ProcessResult r = run_silva(args, dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const fs::path run = dir / "out" / "0000000019";
+  const auto card = nlohmann::json::parse(read_file(run / "card.json"));
+  const std::string drawn = world::forest_type_of("random", 19).name;
+  EXPECT_EQ(card.at("conditions").at("forest_type"), drawn);
+  EXPECT_NE(drawn, "random");
+  EXPECT_NE(read_file(run / "CARD.md").find("forest `" + drawn + "`"), std::string::npos);
 }
 
 TEST(GenerateOutput, QuietPrintsNothingOnSuccess) {
