@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "pipeline/config/lighting_config.hpp"
 #include "pipeline/config/number_format.hpp"
@@ -75,9 +76,9 @@ std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded) {
 /// Lying snow (a weather whose snow_cover is above 0: lighting.weather, or a weather lighting.randomize may
 /// draw) needs vegetation.season = "winter": snow on leafy crowns is no real look, and the season, which
 /// shapes the world, is not the weather's to change.
-void check_snow_season(const std::string& where, const Config& c, const LoadedConfig& loaded) {
+void check_snow_season(const std::string& where, const Config& c,
+                       const std::map<std::string, render::WeatherPreset>& presets) {
   if (c.vegetation.season == "winter") return;
-  const auto presets = parse_weather_tables(loaded.weather_presets, loaded.source);
   const auto snowy = [&](const std::string& name) {
     const auto it = presets.find(name);
     return it != presets.end() && it->second.snow_cover > 0.0f;
@@ -90,14 +91,6 @@ void check_snow_season(const std::string& where, const Config& c, const LoadedCo
   if (!key.empty())
     throw InputError(where + ": " + key + " lays snow, which needs vegetation.season = \"winter\" (got \"" +
                      c.vegetation.season + "\"): bare deciduous crowns; snow on leaves is no real look");
-}
-
-std::vector<std::string> weather_preset_names(const LoadedConfig& loaded) {
-  std::vector<std::string> names;
-  for (const auto& [name, weather] : parse_weather_tables(loaded.weather_presets, loaded.source)) {
-    names.push_back(name);
-  }
-  return names;
 }
 
 void check_config(const LoadedConfig& loaded) {
@@ -161,7 +154,9 @@ void check_config(const LoadedConfig& loaded) {
                      "\" is not a preset (allowed: " + allowed +
                      ", or define [lighting.presets." + c.lighting.time_of_day + "])");
   }
-  const std::vector<std::string> weathers = weather_preset_names(loaded);
+  const auto weather_presets = parse_weather_tables(loaded.weather_presets, loaded.source);
+  std::vector<std::string> weathers;
+  for (const auto& [name, weather] : weather_presets) weathers.push_back(name);
   if (!contains(weathers, c.lighting.weather)) {
     std::string allowed;
     for (const std::string& name : weathers) allowed += (allowed.empty() ? "" : ", ") + name;
@@ -169,7 +164,7 @@ void check_config(const LoadedConfig& loaded) {
                      allowed + ", or define [lighting.weather_presets." + c.lighting.weather + "])");
   }
   check_lighting_randomize(where, c.lighting.randomize, weathers);
-  check_snow_season(where, c, loaded);
+  check_snow_season(where, c, weather_presets);
 }
 
 }  // namespace silva::pipeline

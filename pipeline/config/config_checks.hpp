@@ -21,7 +21,4 @@ bool is_whole_multiple(double whole, double part);
 /// themselves: pipeline/config/lighting_config.hpp parse_preset_tables(loaded.lighting_presets, loaded.source).
 std::vector<std::string> lighting_preset_names(const LoadedConfig& loaded);
 
-/// Names of the weather presets a config can select (built-in and its own), sorted.
-std::vector<std::string> weather_preset_names(const LoadedConfig& loaded);
-
 }  // namespace silva::pipeline

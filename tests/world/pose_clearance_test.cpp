@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include "assets/factory.hpp"
 #include "world/chunk_regions.hpp"
@@ -48,31 +49,30 @@ class FreshWorld {
   std::map<ChunkCoord, ChunkContent> chunks_;
 };
 
-/// Distance from `p` to the nearest canopy vertex of `v`'s full-detail mesh (world space).
-double crown_distance(const Vegetation& v, const Vec3d& p) {
+/// World positions of the canopy vertices of `v`'s full-detail mesh.
+std::vector<Vec3d> canopy_vertices(const Vegetation& v) {
   const Mesh& m = library().assets[v.asset].lods()[0];
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(v.yaw, Vec3d::UnitZ()).toRotationMatrix();
-  double d = INFINITY;
+  std::vector<Vec3d> out;
   for (const MeshPart& part : m.parts)
     if (part.role == Role::TreeCanopy)
-      for (uint32_t i = part.first_index; i < part.first_index + part.index_count; ++i) {
-        const Vec3d w = v.position.cast<double>() + double(v.scale) * (turn * m.positions[m.indices[i]].cast<double>());
-        d = std::min(d, (w - p).norm());
-      }
+      for (uint32_t i = part.first_index; i < part.first_index + part.index_count; ++i)
+        out.push_back(v.position.cast<double>() + double(v.scale) * (turn * m.positions[m.indices[i]].cast<double>()));
+  return out;
+}
+
+/// Distance from `p` to the nearest canopy vertex of `v` (world space).
+double crown_distance(const Vegetation& v, const Vec3d& p) {
+  double d = INFINITY;
+  for (const Vec3d& w : canopy_vertices(v)) d = std::min(d, (w - p).norm());
   return d;
 }
 
-/// Highest canopy vertex of `v`'s full-detail mesh (world z) within `reach` horizontally of `p`; -inf if none.
+/// Highest canopy vertex of `v` (world z) within `reach` horizontally of `p`; -inf if none.
 double highest_canopy_near(const Vegetation& v, const Vec3d& p, double reach) {
-  const Mesh& m = library().assets[v.asset].lods()[0];
-  const Eigen::Matrix3d turn = Eigen::AngleAxisd(v.yaw, Vec3d::UnitZ()).toRotationMatrix();
   double top = -INFINITY;
-  for (const MeshPart& part : m.parts)
-    if (part.role == Role::TreeCanopy)
-      for (uint32_t i = part.first_index; i < part.first_index + part.index_count; ++i) {
-        const Vec3d w = v.position.cast<double>() + double(v.scale) * (turn * m.positions[m.indices[i]].cast<double>());
-        if (std::hypot(w.x() - p.x(), w.y() - p.y()) <= reach) top = std::max(top, w.z());
-      }
+  for (const Vec3d& w : canopy_vertices(v))
+    if (std::hypot(w.x() - p.x(), w.y() - p.y()) <= reach) top = std::max(top, w.z());
   return top;
 }
 
