@@ -104,6 +104,7 @@ struct TrailConfig {
   double width = 1.5;          ///< trail.width (m)
   int control_points = 25;     ///< trail.control_points
   double control_spacing = 20; ///< trail.control_spacing (m)
+  std::string surface = "random";  ///< trail.surface: a core/trail_surface.hpp name or "random"
 };
 
 /// World extent and streaming (`[world]`).

@@ -21,6 +21,7 @@ enum class Purpose : uint32_t {
   ResolveMove = 16,
   ResolvePriority = 17,
   ForestType = 18,
+  TrailSurface = 19,
   AssetShape = 20,
   RandomPose = 30,
   SensorNoise = 40,

@@ -6,6 +6,7 @@
 
 #include "core/material.hpp"
 #include "core/season.hpp"
+#include "core/trail_surface.hpp"
 #include "core/types.hpp"
 #include "render/noise_salts.hpp"
 
@@ -20,6 +21,7 @@ struct SurfacePoint {
   uint32_t variation;  ///< Per-instance variation seed.
   float fallen_leaves = 0.0f;  ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
   float leaf_shade = 1.0f;     ///< The brightness of the leaf under the point (leaf_brightness).
+  TrailSurface trail = TrailSurface::PackedEarth;  ///< The trail's surface family (Material::Trail points).
 };
 
 /// Brightness of one leaf of a foliage mask against its tree's from the alpha of its texel:

@@ -23,6 +23,9 @@ enum NoiseSalt : uint32_t {
   kTrailLitter = 0x460,      ///< Litter drifting in at the edges.
   kTrailFringe = 0x480,      ///< Worn grassy fringe.
   // 0x4a0: the ragged edge of the overlay (kOverlayEdgeSalt, core/surface_overlay.cpp).
+  kTrailGravel = 0x4c0,      ///< Gravel stones and bed.
+  kTrailRut = 0x4e0,         ///< Ruts, mud and the grass between them.
+  kTrailWater = 0x500,       ///< Water standing in a muddy trail's ruts.
   // Bark, foliage and wood (render/materials.cpp).
   kBarkStreak = 0x600,       ///< Vertical bark streaks.
   kBarkLichen = 0x620,       ///< Lichen on bark.

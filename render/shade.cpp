@@ -179,7 +179,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves,
-                       leaf_brightness(g.leaf[i])};
+                       leaf_brightness(g.leaf[i]), in.trail_surface};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f base;
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])
@@ -193,7 +193,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
                               : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
   if (puddle > 0.0f) n = (n + (Vec3f::UnitZ() - n) * puddle).normalized();  // still water lies level
-  const float roughness = look.active() ? look.roughness(response.roughness, n, puddle) : response.roughness;
+  const float roughness = look.active() ? look.roughness(s, response.roughness, n, puddle) : response.roughness;
   return {albedo,       n,           s.normal,         view_dir,
           roughness,    response.f0, response.translucency, row.ao[size_t(u)],
           row.sun_visible[size_t(u)], row.fog_amount[size_t(u)], row.canopy[size_t(u)]};
@@ -211,7 +211,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const LightingPreset lit = with_weather(in.preset);
   const Sky sky(lit);
   const HeightFog fog(lit, sky, in.camera.position().cast<float>());
-  const WeatherLook look(lit.weather);
+  const WeatherLook look(lit.weather, in.trail_surface);
   const SurfaceLighting lighting(sky, fog, in.preset);
   const bool metered = in.auto_exposure && !in.ev100;
   float ev100 = in.ev100 ? *in.ev100 : lit.ev100 - in.exposure_compensation_ev;

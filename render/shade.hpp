@@ -7,6 +7,7 @@
 
 #include "core/camera.hpp"
 #include "core/camera_model.hpp"
+#include "core/trail_surface.hpp"
 #include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
 #include "render/lighting.hpp"
@@ -31,6 +32,7 @@ struct ShadeInputs {
   /// camera takes its left's, as a rig with synchronised exposure does.
   std::optional<float> ev100 = std::nullopt;
   const CanopyMap* canopy = nullptr;  ///< The canopy over the view (sky light under trees), or none.
+  TrailSurface trail_surface = TrailSurface::PackedEarth;  ///< How the trail looks (trail.surface).
 };
 
 /// What shading saw, for the run's statistics.

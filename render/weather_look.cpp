@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/value_noise.hpp"
+#include "render/trail_material.hpp"
 
 namespace silva::render {
 
@@ -22,22 +23,30 @@ constexpr float kPuddleRoughness = 0.03f; ///< GGX roughness of still water.
 float smoothstep01(float x) { return smooth_weight(std::clamp(x, 0.0f, 1.0f)); }
 }  // namespace
 
-WeatherLook::WeatherLook(const WeatherPreset& weather) : wetness_(weather.wetness), snow_(weather.snow_cover) {}
+WeatherLook::WeatherLook(const WeatherPreset& weather, TrailSurface trail)
+    : wetness_(weather.wetness), snow_(weather.snow_cover), muddy_(trail == TrailSurface::Muddy) {}
+
+float WeatherLook::wetness(const SurfacePoint& s) const {
+  return muddy_ && s.material == Material::Trail ? std::max(wetness_, kMudWetness) : wetness_;
+}
 
 float WeatherLook::puddle(const SurfacePoint& s) const {
-  if (wetness_ <= 0.0f || s.material != Material::Trail) return 0.0f;
+  if (s.material != Material::Trail) return 0.0f;
+  const float standing = muddy_ ? trail_standing_water(s) : 0.0f;
+  if (wetness_ <= 0.0f) return standing;
   const float x = s.position.x() * kPuddlesPerMetre, y = s.position.y() * kPuddlesPerMetre;
   const float hollow = 0.75f * value_noise2(x, y, kPuddleSalt) + 0.25f * value_noise2(3.7f * x, 3.7f * y, kPuddleSalt + 1);
-  return smoothstep01((hollow - (1.0f - kPuddleShare * wetness_)) * 12.0f);
+  return std::max(standing, smoothstep01((hollow - (1.0f - kPuddleShare * wetness_)) * 12.0f));
 }
 
 Vec3f WeatherLook::albedo(const Vec3f& albedo, const SurfacePoint& s, float puddle) const {
   Vec3f a = albedo;
-  if (wetness_ > 0.0f) {
+  const float wet = wetness(s);
+  if (wet > 0.0f) {
     // Water fills the surface's pores: less light scattered back, colours deeper.
     const float grey = 0.2126f * a.x() + 0.7152f * a.y() + 0.0722f * a.z();
     const Vec3f saturated = (Vec3f::Constant(grey) + (a - Vec3f::Constant(grey)) * 1.4f).cwiseMax(0.0f) * 0.55f;
-    a += (saturated - a) * wetness_;
+    a += (saturated - a) * wet;
     a *= 1.0f - kPuddleDarkening * puddle;
   }
   if (snow_ > 0.0f) {
@@ -52,9 +61,17 @@ Vec3f WeatherLook::albedo(const Vec3f& albedo, const SurfacePoint& s, float pudd
 }
 
 float WeatherLook::roughness(float dry, const Vec3f& n, float puddle) const {
-  if (wetness_ <= 0.0f) return dry;
+  return wet_roughness(dry, n, puddle, wetness_);
+}
+
+float WeatherLook::roughness(const SurfacePoint& s, float dry, const Vec3f& n, float puddle) const {
+  return wet_roughness(dry, n, puddle, wetness(s));
+}
+
+float WeatherLook::wet_roughness(float dry, const Vec3f& n, float puddle, float wetness) {
+  if (wetness <= 0.0f) return dry;
   const float up = std::max(n.z(), 0.0f);
-  const float wet = dry * (1.0f - wetness_ * (kWetSmoothing + kWetPooling * up * up));
+  const float wet = dry * (1.0f - wetness * (kWetSmoothing + kWetPooling * up * up));
   return wet + (kPuddleRoughness - wet) * puddle;
 }
 

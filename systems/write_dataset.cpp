@@ -190,7 +190,8 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
                                uint64_t(f.frame), frame_camera_model(ctx.config, f),
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
                                lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config)),
-                               ev100,            &sun.canopy};
+                               ev100,            &sun.canopy,
+                               ctx.trail_surface};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;

@@ -11,6 +11,7 @@
 #include "world/species_stands.hpp"
 #include "world/terrain.hpp"
 #include "world/trail.hpp"
+#include "world/trail_surface_choice.hpp"
 
 namespace silva::world {
 
@@ -24,6 +25,7 @@ struct WorldContext {
   TerrainField terrain;                        ///< Height function.
   Trail trail;                                 ///< The trail (enabled = false when off).
   const ForestType* forest = nullptr;          ///< What grows (vegetation.forest_type, drawn for "random").
+  TrailSurface trail_surface{};                ///< How the trail looks (trail.surface, drawn for "random").
   SpeciesStands stands;                        ///< Assets grouped by species, and the stand field.
   std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
   float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.

@@ -194,6 +194,9 @@ std::vector<ConfigKey> build_schema() {
        between(2, 100000), {}, [](Config& c) -> FieldRef { return &c.trail.control_points; }},
       {"trail.control_spacing", T::Float, "metres between trail control points", between(1, 1000),
        {}, [](Config& c) -> FieldRef { return &c.trail.control_spacing; }},
+      {"trail.surface", T::String, "how the trail looks in RGB (labels never change): one family, or one drawn per seed", {},
+       {"packed_earth", "gravel", "roots", "leaf_covered", "muddy", "grass_ruts", "random"},
+       [](Config& c) -> FieldRef { return &c.trail.surface; }},
       {"world.extent", T::Float,
        "side of the square capture region centred on the origin, metres (the trail keeps 32 m "
        "from its edge)",

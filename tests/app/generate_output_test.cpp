@@ -13,6 +13,7 @@
 
 #include "silva_process.hpp"
 #include "world/forest_types.hpp"
+#include "world/trail_surface_choice.hpp"
 
 namespace silva::test {
 namespace {
@@ -50,10 +51,10 @@ TEST(GenerateOutput, JsonSummaryHoldsTheDocumentedFields) {
   EXPECT_FALSE(manifest.at("config").at("output").contains("dir"));
 }
 
-TEST(GenerateOutput, TheCardNamesTheForestTypeARandomWorldDrew) {
+TEST(GenerateOutput, TheCardNamesTheForestTypeAndTrailSurfaceARandomWorldDrew) {
   const fs::path dir = fresh_test_dir();
   std::vector<std::string> args = tiny_run_args(dir / "out", 19);
-  args.insert(args.end(), {"--set", "vegetation.forest_type=random"});
+  args.insert(args.end(), {"--set", "vegetation.forest_type=random", "--set", "trail.surface=random"});
   const ProcessResult r = run_silva(args, dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const fs::path run = dir / "out" / "0000000019";
@@ -62,6 +63,9 @@ TEST(GenerateOutput, TheCardNamesTheForestTypeARandomWorldDrew) {
   EXPECT_EQ(card.at("conditions").at("forest_type"), drawn);
   EXPECT_NE(drawn, "random");
   EXPECT_NE(read_file(run / "CARD.md").find("forest `" + drawn + "`"), std::string::npos);
+  const std::string trail(trail_surface_name(world::trail_surface_of("random", 19)));
+  EXPECT_EQ(card.at("conditions").at("trail_surface"), trail);
+  EXPECT_NE(read_file(run / "CARD.md").find("trail `" + trail + "`"), std::string::npos);
 }
 
 TEST(GenerateOutput, QuietPrintsNothingOnSuccess) {

@@ -34,7 +34,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise", "trajectory.flow"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 90u);
+  EXPECT_EQ(names.size(), 91u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 

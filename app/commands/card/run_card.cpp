@@ -21,6 +21,7 @@
 #include "io/printf_string.hpp"
 #include "io/run_folder.hpp"
 #include "world/forest_types.hpp"
+#include "world/trail_surface_choice.hpp"
 #include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
@@ -59,14 +60,23 @@ std::string percent(double share) {
   return buf;
 }
 
-/// card.json's "rig": its preset, cameras, height (null: camera.ground_height), tilt, LiDAR, the stereo baseline (null:
-/// one camera) and, with the trajectory sequence, the IMU's rate and noise model (else null), from the manifest's config.
 /// The forest type the dataset's world grew: vegetation.forest_type, the drawn one for "random" (and
 /// "mixed" for datasets from before the key).
 std::string forest_type_name(const nlohmann::json& config, uint64_t seed) {
   const nlohmann::json& vegetation = config.at("vegetation");
   return world::forest_type_of(vegetation.value("forest_type", std::string("mixed")), seed).name;
 }
+
+/// The trail's surface family: trail.surface, the drawn one for "random" ("packed_earth" for datasets from
+/// before the key, "none" without a trail).
+std::string trail_surface_label(const nlohmann::json& config, uint64_t seed) {
+  const nlohmann::json& trail = config.at("trail");
+  if (!trail.value("enabled", true)) return "none";
+  return std::string(trail_surface_name(world::trail_surface_of(trail.value("surface", std::string("packed_earth")), seed)));
+}
+
+/// card.json's "rig": its preset, cameras, height (null: camera.ground_height), tilt, LiDAR, the stereo baseline (null:
+/// one camera) and, with the trajectory sequence, the IMU's rate and noise model (else null), from the manifest's config.
 
 nlohmann::json rig_summary(const nlohmann::json& manifest) {
   const nlohmann::json& config = manifest.at("config");
@@ -205,6 +215,7 @@ nlohmann::json card_json(const io::Dataset& d, const io::CardCounts& c, const Ca
             {"weather", config.at("lighting").at("weather")},
             {"season", config.at("vegetation").at("season")},
             {"forest_type", forest_type_name(config, uint64_t(d.seed))},
+            {"trail_surface", trail_surface_label(config, uint64_t(d.seed))},
             {"aerial", config.at("captures").at("aerial")}}},
           {"config_differences", config_differences(config)}};
 }
@@ -278,7 +289,7 @@ std::string card_markdown(const io::Dataset& d, const nlohmann::json& card, cons
   md.resize(md.size() - 2);
   md += "). Conditions: time of day `" + cond["time_of_day"].get<std::string>() + "`, weather `" +
         cond["weather"].get<std::string>() + "`, season `" + cond["season"].get<std::string>() + "`, forest `" +
-        cond["forest_type"].get<std::string>() + "`, " +
+        cond["forest_type"].get<std::string>() + "`, trail `" + cond["trail_surface"].get<std::string>() + "`, " +
         (cond["aerial"].get<bool>() ? "aerial" : "ground") + " perspective.\n\n";
   md += "## Classes\n\n![pixel share per class](card_classes.png)\n\n"
         "| id | class | pixel share | instances | RUGD | RELLIS-3D |\n|---|---|---|---|---|---|\n";
