@@ -5,12 +5,11 @@ one aerial view of the same seed, RGB.
 Usage: scripts/forest_types_sheet.py [--silva build/silva] [--seed 7] [--scratch /tmp/silva-forest-types]
                                      [--out docs/realism-forest-types.jpg]
 """
-import argparse
-import pathlib
 import subprocess
 
 import cv2
-import numpy as np
+
+from labelled_rows import labelled_row, sheet_args, write_sheet
 
 TYPES = ["mixed", "spruce_plantation", "beech_hall", "pine_heath"]
 TILE_W, TILE_H = 480, 270
@@ -32,24 +31,13 @@ def render(silva, scratch, seed, forest, aerial):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--silva", default="build/silva")
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--scratch", default="/tmp/silva-forest-types")
-    parser.add_argument("--out", default="docs/realism-forest-types.jpg")
-    args = parser.parse_args()
-    scratch = pathlib.Path(args.scratch)
-    gap = np.full((TILE_H, 4, 3), 255, np.uint8)
+    args = sheet_args(__doc__, "/tmp/silva-forest-types", "docs/realism-forest-types.jpg")
     rows = []
     for forest in TYPES:
-        ground = render(args.silva, scratch, args.seed, forest, False)
-        aerial = render(args.silva, scratch, args.seed, forest, True)
-        label = np.zeros((TILE_H, LABEL_W, 3), np.uint8)
-        cv2.putText(label, forest.replace("_", " "), (4, TILE_H // 2), cv2.FONT_HERSHEY_SIMPLEX, 0.45,
-                    (255, 255, 255), 1, cv2.LINE_AA)
-        rows.append(np.hstack([label, ground[0], gap, ground[1], gap, aerial[0]]))
-        rows.append(np.full((4, rows[-1].shape[1], 3), 255, np.uint8))
-    cv2.imwrite(args.out, np.vstack(rows[:-1]), [cv2.IMWRITE_JPEG_QUALITY, 80])
+        ground = render(args.silva, args.scratch, args.seed, forest, False)
+        aerial = render(args.silva, args.scratch, args.seed, forest, True)
+        rows.append(labelled_row(forest, [ground[0], ground[1], aerial[0]], LABEL_W))
+    write_sheet(rows, args.out)
 
 
 if __name__ == "__main__":

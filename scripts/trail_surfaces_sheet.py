@@ -5,17 +5,16 @@ along the trail of the same seed and a full-resolution crop of the trail in fron
 Usage: scripts/trail_surfaces_sheet.py [--silva build/silva] [--seed 7] [--scratch /tmp/silva-trail-surfaces]
                                        [--out docs/realism-trails.jpg]
 """
-import argparse
-import pathlib
 import subprocess
 
 import cv2
-import numpy as np
+
+from labelled_rows import labelled_row, sheet_args, write_sheet
 
 FAMILIES = ["packed_earth", "gravel", "roots", "leaf_covered", "muddy", "grass_ruts"]
 TILE_W, TILE_H = 480, 270
 LABEL_W = 120
-FRAMES = (3, 9)  # autopilot points 1 and 3, yaw 0 (along the trail)
+FRAMES = (1, 7)  # autopilot points 0 and 2 at yaw 0 (along the trail): frame = 3 point + yaw index
 
 
 def render(silva, scratch, seed, family):
@@ -27,30 +26,19 @@ def render(silva, scratch, seed, family):
                     "--set", f"output.resolution={2 * TILE_W}x{2 * TILE_H}", "--set", 'output.types=["rgb"]'],
                    check=True)
     folder = out / f"{seed:010d}" / "autopilot" / "rgb"
-    return [cv2.imread(str(folder / f"{k - 2:06d}.png")) for k in FRAMES]
+    return [cv2.imread(str(folder / f"{k:06d}.png")) for k in FRAMES]
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--silva", default="build/silva")
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--scratch", default="/tmp/silva-trail-surfaces")
-    parser.add_argument("--out", default="docs/realism-trails.jpg")
-    args = parser.parse_args()
-    scratch = pathlib.Path(args.scratch)
-    gap = np.full((TILE_H, 4, 3), 255, np.uint8)
+    args = sheet_args(__doc__, "/tmp/silva-trail-surfaces", "docs/realism-trails.jpg")
     rows = []
     for family in FAMILIES:
-        views = render(args.silva, scratch, args.seed, family)
+        views = render(args.silva, args.scratch, args.seed, family)
         small = [cv2.resize(v, (TILE_W, TILE_H), interpolation=cv2.INTER_AREA) for v in views]
         h, w = views[0].shape[:2]
         crop = views[0][h - TILE_H:h, (w - TILE_W) // 2:(w + TILE_W) // 2]  # the trail at the camera's feet
-        label = np.zeros((TILE_H, LABEL_W, 3), np.uint8)
-        cv2.putText(label, family.replace("_", " "), (4, TILE_H // 2), cv2.FONT_HERSHEY_SIMPLEX, 0.45,
-                    (255, 255, 255), 1, cv2.LINE_AA)
-        rows.append(np.hstack([label, small[0], gap, small[1], gap, crop]))
-        rows.append(np.full((4, rows[-1].shape[1], 3), 255, np.uint8))
-    cv2.imwrite(args.out, np.vstack(rows[:-1]), [cv2.IMWRITE_JPEG_QUALITY, 80])
+        rows.append(labelled_row(family, small + [crop], LABEL_W))
+    write_sheet(rows, args.out)
 
 
 if __name__ == "__main__":
