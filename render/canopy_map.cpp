@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace silva::render {
 
@@ -97,10 +98,19 @@ CanopyMap build_canopy_map(const ShadowMap& shadow, const GroundHeight& ground) 
         map.depth[i] = c.cover_depth;
       }
   });
+  std::vector<float> stand_cover = map.cover, stand_depth = map.depth;
   const int r = std::max(1, int(std::lround(kCanopyRadius / map.cell)));
-  for (std::vector<float>* plane : {&map.cover, &map.depth})
-    for (bool columns : {false, true}) box_blur(*plane, map.width, map.height, r, columns);
-  for (size_t i = 0; i < cells; ++i) map.depth[i] = map.cover[i] > 0.0f ? map.depth[i] / map.cover[i] : 0.0f;
+  const int stand_r = std::max(1, int(std::lround(kCanopyStandRadius / map.cell)));
+  for (bool columns : {false, true})
+    for (auto [plane, radius] : {std::pair{&map.cover, r}, std::pair{&map.depth, r}, std::pair{&stand_cover, stand_r},
+                                 std::pair{&stand_depth, stand_r}})
+      box_blur(*plane, map.width, map.height, radius, columns);
+  for (size_t i = 0; i < cells; ++i) {
+    const float near = map.cover[i], stand = kCanopyStandWeight * stand_cover[i];
+    const float weight = near + stand;
+    map.depth[i] = weight > 0.0f ? (map.depth[i] + kCanopyStandWeight * stand_depth[i]) / weight : 0.0f;
+    map.cover[i] = 1.0f - (1.0f - near) * (1.0f - stand);
+  }
   return map;
 }
 

@@ -22,6 +22,11 @@ inline constexpr double kCanopyCell = 0.5;
 inline constexpr double kCanopyHeight = 2.0;
 /// Radius, metres, of the box the cover is averaged over (how far around a point the canopy shades it).
 inline constexpr double kCanopyRadius = 6.0;
+/// Radius, metres, of the stand around a point whose crowns hide the lower sky from it (a gap of a few metres
+/// among 20-30 m trees sees little more than its zenith).
+inline constexpr double kCanopyStandRadius = 15.0;
+/// Weight of the stand's cover: the sky a point sees is (1 - near cover) x (1 - kCanopyStandWeight x stand cover).
+inline constexpr float kCanopyStandWeight = 1.0f;
 /// Light-space depth, metres, over which a point goes from above the canopy's mean depth to below it.
 inline constexpr double kCanopySoftness = 4.0;
 /// Share of the sky light a fully covering canopy takes from a point below it (the rest are gaps).
@@ -42,8 +47,9 @@ struct CanopyMap {
 
 /// The canopy of `shadow`: per cell, the texels whose surface lies kCanopyHeight or more above the
 /// ground (`ground` under the cell's farthest surface, refined once along the light), their share
-/// and mean depth, box-blurred over kCanopyRadius; the share seen along the sun is turned into the
-/// canopy's vertical cover by Beer-Lambert (gap^(sin of the sun's elevation)). Cells run in parallel; the result never depends on threads.
+/// and mean depth, box-blurred over kCanopyRadius (the crowns near) and over kCanopyStandRadius (the
+/// stand), the two covers combined as 1 - (1 - near)(1 - kCanopyStandWeight stand) and their depths
+/// by cover. Cells run in parallel; the result never depends on threads.
 CanopyMap build_canopy_map(const ShadowMap& shadow, const GroundHeight& ground);
 
 /// Share in [0, 1) of the sky light the canopy takes from each of `count` world points: with the vertical gap

@@ -48,8 +48,12 @@ TEST(CanopyMap, KnownAnswersAtAWoodEdge) {
   EXPECT_NEAR(share_at(map, Vec3f(-20.0f, 3.0f, 25.0f)), 0.0f, 1e-6f); // above the canopy
   // At the canopy's own height a point is half below it: gap 0.5, share 1 - 0.5^1.5.
   EXPECT_NEAR(share_at(map, Vec3f(-20.0f, 3.0f, float(kTop))), 1.0f - std::pow(0.5f, 1.5f), 1e-3f);
-  // At the edge the blurred cover is a half (the box is symmetric about it).
-  EXPECT_NEAR(share_at(map, Vec3f(0.0f, 3.0f, 0.0f)), 1.0f - std::pow(0.5f, 1.5f), 0.05f);
+  // At the edge both blurred covers, the crowns near and the stand, are a half (the boxes are symmetric
+  // about it): gap (1 - 0.5)(1 - 0.5).
+  EXPECT_NEAR(share_at(map, Vec3f(0.0f, 3.0f, 0.0f)), 1.0f - std::pow(0.25f, 1.5f), 0.05f);
+  // 10 m into the open no crown is near, but the stand's box reaches 5 m into the wood: a sixth of it.
+  EXPECT_NEAR(share_at(map, Vec3f(10.0f, 3.0f, 0.0f)), 1.0f - std::pow(5.0f / 6.0f, 1.5f), 0.02f);
+  EXPECT_NEAR(share_at(map, Vec3f(16.5f, 3.0f, 0.0f)), 0.0f, 1e-6f);  // beyond the stand's reach
   EXPECT_EQ(share_at(map, Vec3f(-200.0f, 3.0f, 0.0f)), 0.0f);  // outside the map
   // The share falls off monotonically from the wood into the open.
   float previous = 1.0f;

@@ -118,7 +118,6 @@ TEST(SurfaceLight, SunLightsOnlyWhatFacesItAndBackLightPassesTranslucentCards) {
 
 TEST(SurfaceLight, TheCanopyTakesSkyLightAndGivesBackLessGreenLight) {
   const ClearDay day;
-  const Sky& sky = day.sky;
   const SurfaceLighting& lighting = day.lighting;
   SurfaceSample s;
   s.albedo = Vec3f(0.3f, 0.3f, 0.3f);
