@@ -62,10 +62,12 @@ void box_blur(std::vector<float>& plane, int width, int height, int r, bool colu
     for (int l = range.begin(); l < range.end(); ++l) {
       float* p = plane.data() + size_t(l) * line_step;
       for (int i = 0; i < length; ++i) line[size_t(i)] = p[size_t(i) * step];
+      // A running sum over the window [i - r, i + r]: one add and one subtract per texel at any radius.
+      double sum = 0;
+      for (int k = 0; k < std::min(r, length); ++k) sum += double(line[size_t(k)]);
       for (int i = 0; i < length; ++i) {
-        const int a = std::max(0, i - r), z = std::min(length - 1, i + r);
-        double sum = 0;
-        for (int k = a; k <= z; ++k) sum += double(line[size_t(k)]);
+        if (i + r < length) sum += double(line[size_t(i + r)]);
+        if (i - r - 1 >= 0) sum -= double(line[size_t(i - r - 1)]);
         p[size_t(i) * step] = float(sum / double(2 * r + 1));
       }
     }
