@@ -116,44 +116,4 @@ CanopyMap build_canopy_map(const ShadowMap& shadow, const GroundHeight& ground) 
   return map;
 }
 
-void canopy_share_row(const CanopyMap& map, const Vec3f* positions, size_t count, float* out) {
-  if (map.width <= 0 || map.height <= 0) {
-    std::fill(out, out + count, 0.0f);
-    return;
-  }
-  // Light-space rows in float, cell units for x and y: the cover is smooth over metres, so float
-  // precision (millimetres here) is ample.
-  const Mat4d& m = map.world_to_light;
-  const float inv_cell = float(1.0 / map.cell);
-  const Vec3f rx = m.block<1, 3>(0, 0).transpose().cast<float>() * inv_cell;
-  const Vec3f ry = m.block<1, 3>(1, 0).transpose().cast<float>() * inv_cell;
-  const Vec3f rz = m.block<1, 3>(2, 0).transpose().cast<float>();
-  const float ox = float(map.origin_x / map.cell) + 0.5f, oy = float(map.origin_y / map.cell) + 0.5f;
-  const float inv_soft = float(1.0 / kCanopySoftness);
-  for (size_t k = 0; k < count; ++k) {
-    const Vec3f& p = positions[k];
-    const float fx = rx.dot(p) - ox, fy = ry.dot(p) - oy;
-    out[k] = 0.0f;
-    if (!(fx > -1.0f && fy > -1.0f && fx < float(map.width) && fy < float(map.height))) continue;
-    const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-    const float ax = fx - float(x0), ay = fy - float(y0);
-    const int xa = std::max(x0, 0), xb = std::min(x0 + 1, map.width - 1);
-    const int ya = std::max(y0, 0), yb = std::min(y0 + 1, map.height - 1);
-    const size_t r0 = size_t(ya) * size_t(map.width), r1 = size_t(yb) * size_t(map.width);
-    const size_t c[4] = {r0 + size_t(xa), r0 + size_t(xb), r1 + size_t(xa), r1 + size_t(xb)};
-    const float w[4] = {(1.0f - ax) * (1.0f - ay), ax * (1.0f - ay), (1.0f - ax) * ay, ax * ay};
-    float cover = 0, cover_depth = 0;
-    for (int i = 0; i < 4; ++i) {
-      const float wc = w[i] * map.cover[c[i]];
-      cover += wc;
-      cover_depth += wc * map.depth[c[i]];
-    }
-    if (!(cover > 0.0f)) continue;
-    const float below = std::clamp((rz.dot(p) - cover_depth / cover) * inv_soft + 0.5f, 0.0f, 1.0f);
-    // Vertical gap fraction g -> diffuse (cosine-weighted hemisphere) transmittance 2∫g^(1/μ)μ dμ ≈ g^1.5.
-    const float gap = 1.0f - kCanopyDensity * cover * below;
-    out[k] = 1.0f - gap * std::sqrt(gap);
-  }
-}
-
 }  // namespace silva::render

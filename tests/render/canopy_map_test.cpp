@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "highway_targets.hpp"
 
 #include "render/shadow_pass.hpp"
 
@@ -61,6 +65,58 @@ TEST(CanopyMap, KnownAnswersAtAWoodEdge) {
     const float s = share_at(map, Vec3f(x, 3.0f, 0.0f));
     EXPECT_LE(s, previous + 1e-6f) << "x " << x;
     previous = s;
+  }
+}
+
+/// The documented share at p, written out plainly: bilinear cover and cover x depth between cell centres,
+/// how far p lies below their mean depth, gap = 1 - density x cover x below, share 1 - gap^1.5.
+float plain_share(const CanopyMap& map, const Vec3f& p) {
+  const Vec3d l = (map.world_to_light * p.cast<double>().homogeneous()).head<3>();
+  const double fx = (l.x() - map.origin_x) / map.cell - 0.5, fy = (l.y() - map.origin_y) / map.cell - 0.5;
+  if (!(fx > -1.0 && fy > -1.0 && fx < map.width && fy < map.height)) return 0.0f;
+  const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  double cover = 0, cover_depth = 0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int x = std::clamp(x0 + i, 0, map.width - 1), y = std::clamp(y0 + j, 0, map.height - 1);
+      const double w = (i ? fx - x0 : 1.0 - (fx - x0)) * (j ? fy - y0 : 1.0 - (fy - y0));
+      const size_t c = size_t(y) * size_t(map.width) + size_t(x);
+      cover += w * map.cover[c];
+      cover_depth += w * map.cover[c] * map.depth[c];
+    }
+  if (!(cover > 0.0)) return 0.0f;
+  const double below = std::clamp((l.z() - cover_depth / cover) / kCanopySoftness + 0.5, 0.0, 1.0);
+  const double gap = 1.0 - kCanopyDensity * cover * below;
+  return float(1.0 - std::pow(gap, 1.5));
+}
+
+TEST(CanopyMap, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesThePlainFormula) {
+  const CanopyMap map = build_canopy_map(wood_edge(), [](double, double) { return 0.0; });
+  std::vector<Vec3f> points;
+  for (int i = 0; i < 37; ++i)  // across the edge, at several heights, and a few outside the map
+    points.emplace_back(-60.0f + 3.3f * float(i), 0.7f * float(i % 5), float(i % 4) * 4.5f);
+  const std::vector<int64_t> targets = test::highway_targets();
+  ASSERT_GE(targets.size(), 2u);
+  std::vector<float> reference(points.size());
+  {
+    const test::PinnedTarget portable(targets.back());
+    canopy_share_row(map, points.data(), points.size(), reference.data());
+  }
+  int partial = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    EXPECT_NEAR(reference[i], plain_share(map, points[i]), 2e-4f) << i;
+    partial += reference[i] > 0.01f && reference[i] < 0.99f ? 1 : 0;
+  }
+  EXPECT_GT(partial, 3);
+  for (int64_t target : targets) {
+    const test::PinnedTarget pinned(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    std::vector<float> row(points.size());
+    canopy_share_row(map, points.data(), points.size(), row.data());
+    for (size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(row[i], reference[i]) << i;
+      EXPECT_EQ(share_at(map, points[i]), reference[i]) << i;  // one point at a time: the partial-vector path
+    }
   }
 }
 
