@@ -195,6 +195,12 @@ std::shared_ptr<const AlphaMask> birch_spray(float card_side_m) { return family<
 std::shared_ptr<const AlphaMask> oak_spray(float card_side_m) { return family<kOak, 6>(card_side_m); }
 std::shared_ptr<const AlphaMask> bare_twig_spray(float card_side_m) { return family<kTwigs, 7>(card_side_m); }
 
+std::span<const SprayFamily> spray_families() {
+  static constexpr SprayFamily kFamilies[] = {spruce_spray, pine_spray,  larch_spray,    beech_spray,
+                                              birch_spray,  oak_spray,   bare_twig_spray};
+  return kFamilies;
+}
+
 std::shared_ptr<const AlphaMask> bare_twigs_for(const AlphaMask* leafy) {
   for (const MaskFamily leafy_family : {&beech_spray, &birch_spray, &oak_spray, &larch_spray})
     for (int k = 0; k < kSprayClasses; ++k) {

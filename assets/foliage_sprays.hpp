@@ -3,6 +3,7 @@
 /// real size, drawn for the size of the card that carries it (a small card shows a twig, a large
 /// one a branch with hundreds of leaves), with enough texels that a leaf is at least ~12 long.
 #include <memory>
+#include <span>
 
 #include "assets/mask_strokes.hpp"
 #include "core/mesh.hpp"
@@ -62,6 +63,12 @@ std::shared_ptr<const AlphaMask> birch_spray(float card_side_m);
 std::shared_ptr<const AlphaMask> oak_spray(float card_side_m);
 /// Bare twigs (winter and dead crowns): the branching of a spray without its leaves.
 std::shared_ptr<const AlphaMask> bare_twig_spray(float card_side_m);
+
+/// A spray family: the mask for a card side (every class of the family drawn on its first call).
+using SprayFamily = std::shared_ptr<const AlphaMask> (*)(float card_side_m);
+
+/// Every tree spray family (the six species' and the bare twigs'), for drawing them all at once.
+std::span<const SprayFamily> spray_families();
 
 /// The bare-twig spray for the card size a deciduous tree spray (beech, birch, oak, larch) was drawn
 /// for, or nullptr when `leafy` is none of them.
