@@ -66,8 +66,9 @@ void box_blur(std::vector<float>& plane, int width, int height, int r, bool colu
       double sum = 0;
       for (int k = 0; k < std::min(r, length); ++k) sum += double(line[size_t(k)]);
       for (int i = 0; i < length; ++i) {
-        if (i + r < length) sum += double(line[size_t(i + r)]);
-        if (i - r - 1 >= 0) sum -= double(line[size_t(i - r - 1)]);
+        const int enter = i + r, leave = i - r - 1;
+        if (enter < length) sum += double(line[size_t(enter)]);
+        if (leave >= 0) sum -= double(line[size_t(leave)]);
         p[size_t(i) * step] = float(sum / double(2 * r + 1));
       }
     }
