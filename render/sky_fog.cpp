@@ -50,9 +50,9 @@ Vec3f HeightFog::color(const Vec3f& dir) const {
   return in_scatter_ + sun_scatter_ * toward;
 }
 
-Vec3f HeightFog::apply(const Vec3f& surface, float f, const Vec3f& dir) const {
+Vec3f HeightFog::apply(const Vec3f& surface, float f, const Vec3f& dir, float light) const {
   if (f <= 0.0f) return surface;
-  return surface + (color(dir) - surface) * f;
+  return surface + (color(dir) * light - surface) * f;
 }
 
 }  // namespace silva::render

@@ -11,6 +11,9 @@ namespace silva::render {
 /// inside a forest is shaded by the crowns like the floor beneath it, so mist never outshines the
 /// surfaces it hangs between (night mist stays as dark as the night).
 inline constexpr float kFogCanopyOpenness = 0.45f;
+/// Share of the fog's light the canopy over a surface takes from the fog in front of it (the air under trees is
+/// in their shade, but lit sideways from gaps and the open).
+inline constexpr float kFogCanopyShade = 0.6f;
 
 /// Mean path length of diffuse light through a fog column, in units of its vertical optical depth.
 inline constexpr double kDiffuseFogPath = 1.5;
@@ -41,8 +44,9 @@ struct HeightFog {
   /// ground bounce, sun) scattered evenly, times kFogCanopyOpenness, plus a forward lobe towards
   /// the sun; each light dimmed by the fog above (fog_light_transmittance); times fog_tint.
   Vec3f color(const Vec3f& dir) const;
-  /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`.
-  Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir) const;
+  /// `surface` seen through fog of amount `amount` (from amount()/amounts()) along unit direction `dir`, the
+  /// fog lit by `light` of its light (1 - the canopy share over a surface under trees: the air there is in shade).
+  Vec3f apply(const Vec3f& surface, float amount, const Vec3f& dir, float light = 1.0f) const;
   /// The isotropic part of color(), kcd/m².
   const Vec3f& in_scatter() const { return in_scatter_; }
   /// The peak of color()'s forward lobe towards the sun, kcd/m².

@@ -55,7 +55,7 @@ Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s) {
     mirrored += (sky.diffuse(mirrored_dir) * forest_sky_view(mirrored_dir.z()) - mirrored) *
                 (1.0f - s.roughness / kSharpReflection);
   out += mirrored * (ambient_specular_weight(n.dot(to_eye), s.roughness, s.f0) * ambient_visible * open);
-  return lighting.fog.apply(out, s.fog, s.view_dir);
+  return lighting.fog.apply(out, s.fog, s.view_dir, 1.0f - kFogCanopyShade * s.canopy);
 }
 
 void SurfaceBatch::start(size_t capacity) {

@@ -70,7 +70,7 @@ struct SurfaceSample {
 /// Linear radiance (kcd/m²) leaving a surface pixel towards the camera, fog included: the albedo x
 /// (sun x n·l + (ambient SH irradiance x (1 - canopy) + canopy light x canopy) x occlusion) / π, a GGX highlight of the sun, the sky mirrored
 /// by the surface's Fresnel weight x (1 - canopy) (looked up along the reflection below kSharpReflection), and the
-/// sun shining through back-lit thin foliage.
+/// sun shining through back-lit thin foliage; then the height fog, its light x (1 - kFogCanopyShade x canopy).
 Vec3f light_surface(const SurfaceLighting& lighting, const SurfaceSample& s);
 
 /// Surface samples stored field by field (structure of arrays) for light_rough_surfaces; each

@@ -120,6 +120,7 @@ void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch&
     const VF translucency = load(SurfaceBatch::kTranslucency), sun_visible = load(SurfaceBatch::kSunVisible);
     const VF fog = load(SurfaceBatch::kFog), canopy = load(SurfaceBatch::kCanopy);
     const VF open = hn::Sub(one, canopy);
+    const VF fog_light = hn::Sub(one, hn::Mul(hn::Set(d, kFogCanopyShade), canopy));
     const V3 to_eye{hn::Neg(view.x), hn::Neg(view.y), hn::Neg(view.z)};
     const VF ambient_visible =
         hn::Sub(one, hn::Mul(hn::Set(d, lighting.ao_strength), hn::Sub(one, load(SurfaceBatch::kAo))));
@@ -162,8 +163,9 @@ void LightRoughSurfacesImpl(const SurfaceLighting& lighting, const SurfaceBatch&
       const VF toward_z = hn::IfThenElse(up, hn::Set(d, mirror.up[ch]), hn::Set(d, mirror.down[ch]));
       const VF mirrored = hn::Mul(hn::Add(level, hn::Mul(hn::Sub(toward_z, level), abs_z)), view_fraction);
       o = hn::Add(o, hn::Mul(mirrored, mirror_weight));
-      const VF color = hn::Add(hn::Set(d, lighting.fog.in_scatter()[ch]),
-                               hn::Mul(hn::Set(d, lighting.fog.sun_scatter()[ch]), toward));
+      const VF color = hn::Mul(hn::Add(hn::Set(d, lighting.fog.in_scatter()[ch]),
+                                       hn::Mul(hn::Set(d, lighting.fog.sun_scatter()[ch]), toward)),
+                               fog_light);  // the fog over a surface under trees is partly in their shade
       channel[ch] = hn::IfThenElse(fogged, hn::Add(o, hn::Mul(hn::Sub(color, o), fog)), o);
     }
     hn::StoreInterleaved3(channel[0], channel[1], channel[2], d, rgb + 3 * i);

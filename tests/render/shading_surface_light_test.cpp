@@ -135,5 +135,27 @@ TEST(SurfaceLight, TheCanopyTakesSkyLightAndGivesBackLessGreenLight) {
   EXPECT_GT(closed.x(), closed.z());
 }
 
+TEST(SurfaceLight, FogOverASurfaceUnderTreesIsInTheirShade) {
+  const ClearDay day;
+  SurfaceSample s;
+  s.albedo = Vec3f::Zero();  // only the fog's light reaches the eye
+  s.view_dir = Vec3f(1.0f, 0.0f, -0.1f).normalized();
+  s.normal = s.card_normal = Vec3f(0.0f, 0.0f, 1.0f);
+  s.sun_visible = 0.0f;
+  s.roughness = 1.0f;
+  s.f0 = 0.0f;
+  s.fog = 0.3f;
+  const Vec3f open = light_surface(day.lighting, s);
+  s.canopy = 0.75f;
+  const Vec3f shaded = light_surface(day.lighting, s);
+  const float kept = 1.0f - kFogCanopyShade * 0.75f;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(shaded[c], kept * open[c], 1e-3f * open[c]);  // nothing but fog here
+  s.canopy = 1.0f;
+  EXPECT_LT(light_surface(day.lighting, s).sum(), (1.0f - kFogCanopyShade + 1e-3f) * open.sum());
+  s.fog = 0.0f;
+  s.canopy = 0.0f;
+  EXPECT_LT(light_surface(day.lighting, s).sum(), 0.2f * open.sum());  // the fog was most of it
+}
+
 }  // namespace
 }  // namespace silva::render
