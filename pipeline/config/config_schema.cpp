@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/rig_presets.hpp"
+#include "core/trail_surface.hpp"
 #include "pipeline/config/edit_distance.hpp"
 #include "pipeline/config/number_format.hpp"
 
@@ -21,6 +22,13 @@ NumericRange above(double min, double max = kInf) { return {min, max, true}; }
 std::vector<std::string_view> rig_preset_names() {
   std::vector<std::string_view> names;
   for (const RigPreset& p : rig_presets()) names.push_back(p.name);
+  return names;
+}
+
+/// The allowed values of trail.surface: the families' names, then "random".
+std::vector<std::string_view> trail_surface_choices() {
+  std::vector<std::string_view> names(kTrailSurfaceNames.begin(), kTrailSurfaceNames.end());
+  names.push_back("random");
   return names;
 }
 
@@ -195,8 +203,7 @@ std::vector<ConfigKey> build_schema() {
       {"trail.control_spacing", T::Float, "metres between trail control points", between(1, 1000),
        {}, [](Config& c) -> FieldRef { return &c.trail.control_spacing; }},
       {"trail.surface", T::String, "how the trail looks in RGB (labels never change): one family, or one drawn per seed", {},
-       {"packed_earth", "gravel", "roots", "leaf_covered", "muddy", "grass_ruts", "random"},
-       [](Config& c) -> FieldRef { return &c.trail.surface; }},
+       trail_surface_choices(), [](Config& c) -> FieldRef { return &c.trail.surface; }},
       {"world.extent", T::Float,
        "side of the square capture region centred on the origin, metres (the trail keeps 32 m "
        "from its edge)",
