@@ -31,7 +31,7 @@ Vec3f variation_tint(uint32_t variation) {
 Vec3f ground(const SurfacePoint& s) {
   Vec3f c;
   const float footprint = 0.0f;
-  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c, nullptr, nullptr, s.fallen_leaves);
+  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &c, nullptr, nullptr, s.floor);
   return c;
 }
 

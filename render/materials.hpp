@@ -12,6 +12,14 @@
 
 namespace silva::render {
 
+/// What lies on a world's whole forest floor: the season's fresh leaves and the kind of litter.
+struct FloorLook {
+  float fallen_leaves = 0.0f;   ///< The season's fresh leaf litter (fallen_leaf_cover).
+  /// Share of needles in the litter everywhere, 0 … 1 (a forest type of one kind of tree); negative:
+  /// stands of needle and of leaf litter from noise (a mixed forest).
+  float needle_share = -1.0f;
+};
+
 /// What a material function needs to know about one visible surface point.
 struct SurfacePoint {
   Vec3f position;      ///< World position (metres, Z up).
@@ -19,7 +27,7 @@ struct SurfacePoint {
   Vec2f uv;            ///< Mesh texture coordinates (trail: render/trail_material.hpp).
   Material material;   ///< Which procedural material.
   uint32_t variation;  ///< Per-instance variation seed.
-  float fallen_leaves = 0.0f;  ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
+  FloorLook floor{};           ///< What lies on the forest floor (Ground and Trail points).
   float leaf_shade = 1.0f;     ///< The brightness of the leaf under the point (leaf_brightness).
   TrailSurface trail = TrailSurface::PackedEarth;  ///< The trail's surface family (Material::Trail points).
 };
@@ -68,12 +76,12 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 /// there) into out[i], one point per SIMD lane; `soil` (may be null) receives each point's
 /// bare-soil weight in [0, 1]. With smoothstep(e0, e1, x) and fbm2(x, y, octaves, salt):
 ///   flat = smoothstep(0.6, 0.9, n.z); fine_detail = 1 - smoothstep(0.01, 0.05, footprint)
-///   needles = smoothstep(0.42, 0.58, fbm2(0.02 p, 2, stand))
+///   needles = smoothstep(0.42, 0.58, fbm2(0.02 p, 2, stand)), or floor.needle_share where that is set
 ///   leaf = value_noise2(9 p, leaf); c = mix(leaf_litter, needle_litter, needles)
 ///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) fine_detail)
 ///   c = mix(c, grass, 0.8 smoothstep(0.62, 0.78, fbm2(0.06 p, 2, grass)) flat)
 ///   c = mix(c, moss, 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
-///   with fallen_leaves f > 0 (autumn): fallen = f smoothstep(0.25, 0.55, fbm2(0.4 p, 2, fallen)) (1 - 0.7 needles),
+///   with floor.fallen_leaves f > 0 (autumn): fallen = f smoothstep(0.25, 0.55, fbm2(0.4 p, 2, fallen)) (1 - 0.7 needles),
 ///   hue = mix(fbm2(1.5 p, 2, fallen + 8), smoothstep(0.3, 0.7, leaf), fine_detail),
 ///   c = mix(c, mix(fallen_orange, fallen_yellow, hue), fallen): fresh leaves over grass and moss
 ///   soil = max(1 - flat, smoothstep(0.7, 0.84, fbm2(0.5 p, 3, soil))); c = mix(c, soil_colour, soil)
@@ -84,9 +92,9 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 ///   height = (kGroundLeafRelief leaf + kGroundSpeckleRelief speckle) fine_detail
 /// (analytic derivatives of the same two value noises; fine_detail taken as constant).
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
-                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr, float fallen_leaves = 0.0f);
+                       Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr, const FloorLook& floor = {});
 
-/// How much fresh leaf litter a season lays on the forest floor (ground_albedo_row's fallen_leaves):
+/// How much fresh leaf litter a season lays on the forest floor (FloorLook::fallen_leaves):
 /// autumn 0.8, else 0 (winter's litter lies under the snow or has browned into the old litter).
 float fallen_leaf_cover(Season season);
 

@@ -16,6 +16,7 @@ enum NoiseSalt : uint32_t {
   kGroundFineSalt = 0x180,   ///< Brightness grain.
   kGroundLeafSalt = 0x1a0,   ///< Leaf-sized blotches (and + 1: speckle).
   kGroundFallenSalt = 0x1c0, ///< Drifts of freshly fallen autumn leaves (and + 8: their hue).
+  kGroundLitterSalt = 0x1e0, ///< Single leaves, needles and twigs (render/floor_litter.hpp).
   // Trail (render/trail_material.cpp).
   kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
   kTrailStone = 0x420,       ///< Embedded stones.

@@ -163,7 +163,7 @@ struct RowTerms {
     gather_soil.resize(ground_at.size());
     gather_slope.resize(ground_at.size());
     ground_albedo_row(gather_p.data(), gather_n.data(), gather_footprint.data(), ground_at.size(), gather_out.data(),
-                      gather_soil.data(), gather_slope.data(), in.fallen_leaves);
+                      gather_soil.data(), gather_slope.data(), in.floor);
     for (size_t k = 0; k < ground_at.size(); ++k) {
       ground[ground_at[k]] = gather_out[k];
       ground_slope[ground_at[k]] = gather_slope[k];
@@ -178,7 +178,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
                              const Vec3f& view_dir) {
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
-  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.fallen_leaves,
+  const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.floor,
                        leaf_brightness(g.leaf[i]), in.trail_surface};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f base;

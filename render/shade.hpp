@@ -11,6 +11,7 @@
 #include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
 #include "render/lighting.hpp"
+#include "render/materials.hpp"
 
 namespace silva::render {
 
@@ -27,7 +28,7 @@ struct ShadeInputs {
   bool auto_exposure = false;     ///< Expose by the frame's metered luminance (render/auto_exposure.hpp), not preset.ev100.
   float exposure_compensation_ev = 0.0f;  ///< EV added to the image's brightness (the EV100 used is lowered by it).
   Vec3f white_balance = Vec3f::Ones();    ///< Per-channel gains of the camera's white balance (render/frame_lighting.hpp).
-  float fallen_leaves = 0.0f;             ///< The season's fresh leaf litter on the forest floor (fallen_leaf_cover).
+  FloorLook floor{};                      ///< What lies on the forest floor (season's leaves, kind of litter).
   /// Expose with this EV100 (compensation included), neither metered nor the preset's: a stereo pair's right
   /// camera takes its left's, as a rig with synchronised exposure does.
   std::optional<float> ev100 = std::nullopt;

@@ -177,6 +177,11 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   if (writer.progress) writer.progress(stats.frames_written, writer.total);
 }
 
+/// What lies on the world's forest floor: the season's fresh leaves and the forest type's litter.
+render::FloorLook floor_look(const world::WorldContext& ctx) {
+  return {render::fallen_leaf_cover(config_season(ctx.config)), ctx.forest ? float(ctx.forest->needle_litter) : -1.0f};
+}
+
 }  // namespace
 
 void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWork& sun, std::optional<float> ev100) {
@@ -189,7 +194,7 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
                                uint64_t(ctx.config.seed), noise_stream,
                                uint64_t(f.frame), frame_camera_model(ctx.config, f),
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
-                               lighting.white_balance, render::fallen_leaf_cover(config_season(ctx.config)),
+                               lighting.white_balance, floor_look(ctx),
                                ev100,            &sun.canopy,
                                ctx.trail_surface};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);

@@ -18,6 +18,9 @@ struct ForestType {
   double shrub_scale = 1.0;              ///< Factor on the share of points that hold a shrub.
   double ground_share = 1.0;             ///< Share of ground-vegetation points with grass and ferns (the rest bare litter).
   double fern_bias = 0.0;                ///< Added to the share of ferns among those tufts (kept within 0 … 1).
+  /// Share of needles in the floor's litter everywhere (render/materials.hpp FloorLook); negative:
+  /// stands of needle and of leaf litter across the world.
+  double needle_litter = -1.0;
 };
 
 /// The named types, `mixed` (every species, the default) first, then `spruce_plantation`,

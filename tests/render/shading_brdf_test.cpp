@@ -9,6 +9,7 @@
 
 #include "highway_targets.hpp"
 #include "render/brdf.hpp"
+#include "render/floor_litter.hpp"
 #include "render/materials.hpp"
 #include "core/value_noise.hpp"
 #include "render/weather_look.hpp"
@@ -161,7 +162,8 @@ TEST(ShadingBrdf, BarkAndRockReliefTiltsTheShadingNormalUpClose) {
   EXPECT_EQ(material_shading_normal(leaf, 0.0f), leaf.normal);
 }
 
-/// The forest floor's relief height at p for a footprint at full detail (materials.hpp).
+/// The forest floor's relief height at p where the litter sprites have faded (materials.hpp), before the
+/// fine-detail fade.
 double ground_height(double x, double y) {
   return kGroundLeafRelief * value_noise2(float(9 * x), float(9 * y), kGroundLeafSalt) +
          kGroundSpeckleRelief * value_noise2(float(23 * x), float(23 * y), kGroundLeafSalt + 1);
@@ -169,27 +171,32 @@ double ground_height(double x, double y) {
 
 TEST(ShadingBrdf, GroundSlopeIsTheReliefGradientOnEveryHighwayTarget) {
   std::vector<Vec3f> p, n(37, Vec3f(0, 0, 1)), albedo(37);
-  std::vector<float> footprint(37, 0.0f);
   for (int i = 0; i < 37; ++i) p.emplace_back(0.137f * float(i) - 2.0f, 0.071f * float(i * 7 % 37), 0.0f);
-  std::vector<Vec2f> first;
-  for (int64_t target : test::highway_targets()) {
-    const test::PinnedTarget pinned(target);
-    std::vector<Vec2f> slope(p.size());
-    ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), albedo.data(), nullptr, slope.data());
-    if (first.empty()) first = slope;
-    for (size_t i = 0; i < p.size(); ++i) {
-      EXPECT_EQ(slope[i], first[i]) << hwy::TargetName(target) << " " << i;  // the same bits everywhere
-      const double h = 1e-4, x = p[i].x(), y = p[i].y();
-      const double dx = (ground_height(x + h, y) - ground_height(x - h, y)) / (2 * h);
-      const double dy = (ground_height(x, y + h) - ground_height(x, y - h)) / (2 * h);
-      EXPECT_NEAR(slope[i].x(), dx, 0.02) << i;
-      EXPECT_NEAR(slope[i].y(), dy, 0.02) << i;
+  // Up close (the sprites' tilts included) and where the sprites have faded (footprint kLitterFadeFar,
+  // half of the fine detail left: the relief noises' gradient times 0.5).
+  for (const float footprint_m : {0.0f, kLitterFadeFar}) {
+    const std::vector<float> footprint(37, footprint_m);
+    std::vector<Vec2f> first;
+    for (int64_t target : test::highway_targets()) {
+      const test::PinnedTarget pinned(target);
+      std::vector<Vec2f> slope(p.size());
+      ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), albedo.data(), nullptr, slope.data());
+      if (first.empty()) first = slope;
+      for (size_t i = 0; i < p.size(); ++i) {
+        EXPECT_EQ(slope[i], first[i]) << hwy::TargetName(target) << " " << i;  // the same bits everywhere
+        if (footprint_m == 0.0f) continue;
+        const double h = 1e-4, x = p[i].x(), y = p[i].y();
+        const double dx = 0.5 * (ground_height(x + h, y) - ground_height(x - h, y)) / (2 * h);
+        const double dy = 0.5 * (ground_height(x, y + h) - ground_height(x, y - h)) / (2 * h);
+        EXPECT_NEAR(slope[i].x(), dx, 0.01) << i;
+        EXPECT_NEAR(slope[i].y(), dy, 0.01) << i;
+      }
     }
   }
   // Far away (footprint beyond the fine-detail fade) the floor is flat.
-  std::fill(footprint.begin(), footprint.end(), 0.2f);
+  const std::vector<float> far(37, 0.2f);
   std::vector<Vec2f> slope(p.size());
-  ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), albedo.data(), nullptr, slope.data());
+  ground_albedo_row(p.data(), n.data(), far.data(), p.size(), albedo.data(), nullptr, slope.data());
   for (const Vec2f& s : slope) EXPECT_EQ(s, Vec2f::Zero());
 }
 

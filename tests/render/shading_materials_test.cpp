@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "highway_targets.hpp"
+#include "render/floor_litter.hpp"
 #include "render/materials.hpp"
 #include "core/value_noise.hpp"
 #include "core/surface_overlay.hpp"
@@ -74,17 +75,19 @@ TEST(ShadingMaterials, TrailFadesIntoTheGroundByItsEdgeCoordinate) {
 namespace silva::render {
 namespace {
 
-/// The ground formula of materials.hpp from the scalar noise functions (test oracle); returns the
-/// albedo and sets `soil_weight`.
-Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil_weight) {
+/// The ground formula of materials.hpp from the scalar noise functions and floor_litter.hpp's scalar
+/// sprites (test oracle); returns the albedo and sets `soil_weight`.
+Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil_weight, float needle_share = -1.0f) {
   const auto smoothstep = [](float e0, float e1, float x) {
     return smooth_weight(std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f));
   };
   const float flat = smoothstep(0.6f, 0.9f, n.z());
   const float fine_detail = 1.0f - smoothstep(0.01f, 0.05f, footprint);
-  const float needles = smoothstep(0.42f, 0.58f, fbm2(p.x() * 0.02f, p.y() * 0.02f, 2, kGroundStandSalt));
+  const float sprites = litter_fade(footprint);
+  const float needles = needle_share >= 0.0f ? needle_share
+                                             : smoothstep(0.42f, 0.58f, fbm2(p.x() * 0.02f, p.y() * 0.02f, 2, kGroundStandSalt));
   const float leaf = value_noise2(p.x() * 9.0f, p.y() * 9.0f, kGroundLeafSalt);
-  const float dry = smoothstep(0.6f, 0.8f, leaf) * (1.0f - needles) * fine_detail;
+  const float dry = smoothstep(0.6f, 0.8f, leaf) * (1.0f - needles) * (fine_detail * (1.0f - sprites));
   const float grass = smoothstep(0.62f, 0.78f, fbm2(p.x() * 0.06f, p.y() * 0.06f, 2, kGroundGrassSalt)) * 0.8f * flat;
   const float moss = smoothstep(0.6f, 0.72f, fbm2(p.x() * 0.15f, p.y() * 0.15f, 3, kGroundMossSalt)) * 0.85f * flat;
   const float soil =
@@ -103,6 +106,9 @@ Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil
     c[k] = v * brightness;
   }
   soil_weight = soil;
+  Vec2f slope(0.0f, 0.0f);  // the sprites' tilt: not checked here
+  litter_sprites(p.x(), p.y(), footprint, needles, 0.0f, sprites * (1.0f - grass) * (1.0f - moss * 0.7f) * (1.0f - soil), c,
+                 slope);
   return c;
 }
 
@@ -114,6 +120,11 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     n.push_back(Vec3f(0.1f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
     footprint.push_back(0.011f * float(i % 41));  // 0 .. 0.44 m: every detail fade
   }
+  for (int i = 0; i < 403; ++i) {  // near the camera, where the litter sprites lie: 1.3 mm apart
+    p.emplace_back(12.3f + 0.0013f * float(i), -7.1f + 0.0009f * float(i % 97), 0.2f);
+    n.emplace_back(0.0f, 0.0f, 1.0f);
+    footprint.push_back(0.00005f * float(i % 450));  // 0 .. 2 cm: full sprites to faded
+  }
   const std::vector<int64_t> targets = test::highway_targets();
   ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
@@ -123,6 +134,14 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     std::vector<Vec3f> out(p.size());
     std::vector<float> soil(p.size());
     ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), out.data(), soil.data());
+    for (const float share : {0.0f, 0.85f, 1.0f}) {  // a forest type's litter everywhere
+      std::vector<Vec3f> typed(p.size());
+      ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), typed.data(), nullptr, nullptr, FloorLook{0.0f, share});
+      for (size_t i = 0; i < p.size(); ++i) {
+        float soil_weight = -1.0f;
+        EXPECT_EQ(typed[i], ground_oracle(p[i], n[i], footprint[i], soil_weight, share)) << share << " " << i;
+      }
+    }
     for (size_t i = 0; i < p.size(); ++i) {
       float soil_weight = -1.0f;
       EXPECT_EQ(out[i], ground_oracle(p[i], n[i], footprint[i], soil_weight)) << i;
@@ -148,7 +167,7 @@ TEST(ShadingMaterials, FoliageRowsAreMaterialAlbedoBitForBitOnEveryHighwayTarget
     ASSERT_TRUE(plain_foliage_base(m, b));
     base.push_back(b);
     leaf.push_back(leaf_brightness(uint8_t(100 + i * 3)));  // below, across and above the per-leaf alphas
-    want.push_back(material_albedo(SurfacePoint{p.back(), Vec3f::UnitZ(), Vec2f::Zero(), m, variation.back(), 0.0f,
+    want.push_back(material_albedo(SurfacePoint{p.back(), Vec3f::UnitZ(), Vec2f::Zero(), m, variation.back(), FloorLook{},
                                                 leaf.back()}));
   }
   for (int64_t target : test::highway_targets()) {

@@ -1,0 +1,106 @@
+#include "render/floor_litter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/value_noise.hpp"
+#include "render/materials.hpp"
+
+namespace silva::render {
+
+namespace {
+
+/// Byte `shift / 8` of hash `h` as a value in [0, 1].
+float byte_value(uint32_t h, int shift) { return float((h >> shift) & 255u) * (1.0f / 255.0f); }
+
+/// Share of the pixel's box [x - f/2, x + f/2] (half_f = f/2, inv_f = 1/f) inside the band [-w, w].
+float band_cover(float x, float w, float half_f, float inv_f) {
+  return std::min(std::max(std::min(w, x + half_f) - std::max(-w, x - half_f), 0.0f) * inv_f, 1.0f);
+}
+
+/// One sprite's shape, colour and tilt, drawn from its cell's two hashes.
+struct Sprite {
+  float half_length, half_width_at_middle, tilt, curl, keep;
+  bool leaf;
+  Vec3f colour;
+};
+
+Sprite sprite_of(uint32_t h1, uint32_t h2, float needles, float fresh) {
+  const float size = byte_value(h2, 0), hue = byte_value(h2, 8), kind = byte_value(h2, 16), pick = byte_value(h2, 24);
+  const bool twig = kind >= 1.0f - kLitterTwigShare;
+  const bool needle = !twig && kind < needles;
+  Sprite s{};
+  s.leaf = !twig && !needle;
+  s.keep = pick < kLitterDensity ? 1.0f : 0.0f;
+  s.tilt = (byte_value(h1 ^ h2, 4) * 2.0f - 1.0f) * kLitterTilt;
+  s.curl = s.leaf ? kLitterCurl : 0.0f;
+  const float* half = s.leaf ? kLitterLeafHalf : needle ? kLitterNeedleHalf : kLitterTwigHalf;
+  s.half_length = half[0] + half[1] * size;
+  const float width = kLitterLeafWidth[0] + kLitterLeafWidth[1] * byte_value(h1 ^ h2, 12);
+  s.half_width_at_middle = s.leaf     ? width * s.half_length
+                           : needle   ? kLitterNeedleHalfWidth
+                                      : kLitterTwigHalfWidth[0] + kLitterTwigHalfWidth[1] * hue;
+  const bool is_fresh = s.leaf && pick < kLitterDensity * fresh;
+  const float* dark = is_fresh ? kGroundFallenOrange : s.leaf ? kLitterLeafDark : needle ? kLitterNeedleDark : kLitterTwigDark;
+  const float* light =
+      is_fresh ? kGroundFallenYellow : s.leaf ? kLitterLeafLight : needle ? kLitterNeedleLight : kLitterTwigLight;
+  for (int k = 0; k < 3; ++k) s.colour[k] = mix(dark[k], light[k], hue);
+  return s;
+}
+
+/// How far beyond a sprite's half length and half width its shadow and a pixel's filter can reach it
+/// (metres): the shadow's width and a margin far above rounding, so skipping the sprites beyond is exact.
+constexpr float kLitterReach = kLitterShadowWidth + 1e-4f;
+
+/// Lays sprite `s` (cell hash h1), whose centre is (rx, ry) metres from the point, over `c` and `slope`.
+void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, float inv_f, float weight, Vec3f& c,
+                Vec2f& slope) {
+  const float reach_u = s.half_length + kLitterReach + half_f, reach_v = s.half_width_at_middle + kLitterReach + half_f;
+  if (s.keep == 0.0f || rx * rx + ry * ry >= reach_u * reach_u + reach_v * reach_v) return;  // it does not reach here
+  const float ax = byte_value(h1, 16) * 2.0f - 1.0f, ay = byte_value(h1, 24) * 2.0f - 1.0f;
+  const float len = std::sqrt(ax * ax + ay * ay + 1e-8f);
+  const float ux = ax / len, uy = ay / len;
+  const float u = rx * ux + ry * uy, across = ry * ux - rx * uy, v = std::abs(across);
+  const float t = u / s.half_length;
+  const float half_width = s.leaf ? s.half_width_at_middle * (1.0f - t * t) : s.half_width_at_middle;
+  const float presence = s.keep * weight;
+  const float cover = band_cover(v, half_width, half_f, inv_f) * band_cover(u, s.half_length, half_f, inv_f) * presence;
+  const float shadow = band_cover(v, half_width + kLitterShadowWidth, half_f, inv_f) *
+                       band_cover(u, s.half_length + kLitterShadowWidth, half_f, inv_f) * presence;
+  const float rib =
+      s.leaf ? band_cover(v, kLitterRibHalfWidth, half_f, inv_f) * band_cover(u, 0.9f * s.half_length, half_f, inv_f) : 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    const float under = c[k] * (1.0f - kLitterShadow * shadow);
+    c[k] = mix(under, s.colour[k] * (1.0f - kLitterRib * rib), cover);
+  }
+  const float side = std::copysign(s.curl, across);  // each half of a curled leaf slopes away from the midrib
+  slope = Vec2f(mix(slope.x(), ux * s.tilt - uy * side, cover), mix(slope.y(), uy * s.tilt + ux * side, cover));
+}
+
+}  // namespace
+
+float litter_fade(float footprint) {
+  const float t = std::clamp((footprint - kLitterFadeNear) / (kLitterFadeFar - kLitterFadeNear), 0.0f, 1.0f);
+  return 1.0f - smooth_weight(t);
+}
+
+void litter_sprites(float x, float y, float footprint, float needles, float fresh, float weight, Vec3f& c,
+                    Vec2f& slope) {
+  if (!(weight > 0.0f)) return;
+  const float f = std::clamp(footprint, 1e-4f, kLitterWidestFilter);
+  const float half_f = 0.5f * f, inv_f = 1.0f / f;
+  const float gx = x * (1.0f / kLitterCell), gy = y * (1.0f / kLitterCell);
+  const float fx = std::floor(gx), fy = std::floor(gy);
+  const int32_t ix = int32_t(fx), iy = int32_t(fy);
+  for (int layer = 0; layer < kLitterLayers; ++layer)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const uint32_t h1 = lattice_hash(ix + dx, iy + dy, 2 * layer, kGroundLitterSalt);
+        const uint32_t h2 = lattice_hash(ix + dx, iy + dy, 2 * layer + 1, kGroundLitterSalt);
+        const float rx = (gx - (fx + float(dx)) - byte_value(h1, 0)) * kLitterCell;
+        const float ry = (gy - (fy + float(dy)) - byte_value(h1, 8)) * kLitterCell;
+        lay_sprite(sprite_of(h1, h2, needles, fresh), h1, rx, ry, half_f, inv_f, weight, c, slope);
+      }
+}
+
+}  // namespace silva::render

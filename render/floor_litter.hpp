@@ -1,0 +1,69 @@
+#pragma once
+/// @file Single leaves, needles and twigs lying on the forest floor near the camera: procedural
+/// sprites on a jittered grid, composited over the floor's colour and relief with antialiased edges
+/// (each sprite's coverage of the pixel's box footprint) and a thin contact shadow around each.
+/// Faded out where one pixel covers more than a couple of centimetres, where ground_albedo_row's
+/// leaf-sized blotches take over. The scalar definition; render/floor_litter-inl.h evaluates it on
+/// SIMD lanes with the same operations in the same order.
+#include <cstdint>
+
+#include "core/types.hpp"
+#include "render/noise_salts.hpp"
+
+namespace silva::render {
+
+/// Grid cell of the sprites (metres): at most one sprite per cell and layer, its centre inside the
+/// cell, so a point sees every sprite that can reach it among its own cell and the eight around it.
+inline constexpr float kLitterCell = 0.06f;
+/// Layers of sprites, each over the one before (about 60 % of a broadleaf floor covered).
+inline constexpr int kLitterLayers = 2;
+/// Share of cells that hold a sprite in each layer.
+inline constexpr float kLitterDensity = 0.95f;
+/// Share of sprites that are twigs (the rest leaves or needles, by the stand's needle share).
+inline constexpr float kLitterTwigShare = 0.05f;
+/// Width (metres) of the contact shadow around each sprite, and how much it darkens the floor.
+inline constexpr float kLitterShadowWidth = 0.004f;
+inline constexpr float kLitterShadow = 0.25f;  ///< Darkening at the sprite's edge.
+/// How far a midrib darkens its leaf, and its half width (metres).
+inline constexpr float kLitterRib = 0.3f;
+inline constexpr float kLitterRibHalfWidth = 0.0005f;
+/// Largest slope (metres per metre) a sprite lies at: leaves rest on each other.
+inline constexpr float kLitterTilt = 0.35f;
+/// Slope of each half of a leaf away from its midrib: leaves curl, one half towards the light.
+inline constexpr float kLitterCurl = 0.3f;
+/// Footprints (metres per pixel) over which the sprites fade out: a leaf 5 … 2 pixels long.
+inline constexpr float kLitterFadeNear = 0.012f;
+inline constexpr float kLitterFadeFar = 0.03f;
+/// The widest antialiasing filter (metres): a filtered sprite still stays inside its cell's neighbours.
+inline constexpr float kLitterWidestFilter = 0.02f;
+/// Leaf (half length = kLitterLeafHalf[0] + kLitterLeafHalf[1] size, half width kLitterLeafWidth[0] +
+/// kLitterLeafWidth[1] w of the half length at the middle, narrowing to the tips), needle and twig
+/// shapes (metres).
+inline constexpr float kLitterLeafHalf[2] = {0.025f, 0.015f};
+inline constexpr float kLitterLeafWidth[2] = {0.4f, 0.3f};        ///< Leaf half width / half length.
+inline constexpr float kLitterNeedleHalf[2] = {0.008f, 0.017f};  ///< Needles 1.6 – 5 cm long.
+inline constexpr float kLitterNeedleHalfWidth = 0.0006f;        ///< Needles 1.2 mm wide.
+inline constexpr float kLitterTwigHalf[2] = {0.028f, 0.014f};    ///< Twigs 5.6 – 8.4 cm long.
+inline constexpr float kLitterTwigHalfWidth[2] = {0.0012f, 0.0018f};  ///< Twigs 2.4 – 6 mm thick.
+/// Linear-RGB colours, dark and light end of each kind (a sprite's hue mixes them).
+inline constexpr float kLitterLeafDark[3] = {0.055f, 0.037f, 0.024f};
+inline constexpr float kLitterLeafLight[3] = {0.165f, 0.113f, 0.066f};
+inline constexpr float kLitterNeedleDark[3] = {0.07f, 0.04f, 0.022f};
+inline constexpr float kLitterNeedleLight[3] = {0.17f, 0.1f, 0.05f};
+inline constexpr float kLitterTwigDark[3] = {0.04f, 0.033f, 0.027f};
+inline constexpr float kLitterTwigLight[3] = {0.12f, 0.1f, 0.085f};
+
+/// How much the sprites show where one pixel covers `footprint` metres: 1 up to kLitterFadeNear,
+/// 0 from kLitterFadeFar.
+float litter_fade(float footprint);
+
+/// Composites the litter sprites over the floor colour `c` and relief gradient `slope` (metres per
+/// metre) at world point (x, y), seen with a pixel footprint of `footprint` metres. `needles` is the
+/// stand's needle share (0 broadleaf … 1 conifer), `fresh` the share of leaves that are freshly
+/// fallen (autumn colours), `weight` how much litter lies here (0 on grass, moss and bare soil;
+/// litter_fade included). Sprites lie over each other in the order (layer, cell y, cell x), so
+/// overlaps agree between neighbouring points.
+void litter_sprites(float x, float y, float footprint, float needles, float fresh, float weight, Vec3f& c,
+                    Vec2f& slope);
+
+}  // namespace silva::render

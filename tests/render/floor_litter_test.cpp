@@ -1,0 +1,127 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/value_noise.hpp"
+#include "render/floor_litter.hpp"
+#include "render/noise_salts.hpp"
+
+namespace silva::render {
+namespace {
+
+const Vec3f kFloor(0.1f, 0.1f, 0.1f);  ///< A grey floor under the sprites.
+
+/// The floor colour after the sprites at (x, y).
+Vec3f litter_at(float x, float y, float footprint, float needles, float weight = 1.0f, Vec2f* slope = nullptr) {
+  Vec3f c = kFloor;
+  Vec2f s(0.0f, 0.0f);
+  litter_sprites(x, y, footprint, needles, 0.0f, weight, c, s);
+  if (slope) *slope = s;
+  return c;
+}
+
+/// Share of a 1 m square's points (5 mm apart) that the sprites change, at a 2 mm footprint.
+float covered_share(float needles) {
+  int changed = 0, total = 0;
+  for (int j = 0; j < 200; ++j)
+    for (int i = 0; i < 200; ++i, ++total)
+      changed += (litter_at(3.0f + 0.005f * float(i), -2.0f + 0.005f * float(j), 0.002f, needles) - kFloor).norm() > 0.01f;
+  return float(changed) / float(total);
+}
+
+TEST(FloorLitter, LeavesCoverPartOfABroadleafFloorAndNeedlesLess) {
+  const float leaves = covered_share(0.0f), needles = covered_share(1.0f);
+  EXPECT_GT(leaves, 0.35f);  // single leaves with the dark floor between them
+  EXPECT_LT(leaves, 0.8f);
+  EXPECT_GT(needles, 0.03f);  // thin needles and a few twigs
+  EXPECT_LT(needles, 0.5f * leaves);
+}
+
+TEST(FloorLitter, NoWeightOrAFarFootprintLeavesTheFloorAlone) {
+  for (int i = 0; i < 500; ++i) {
+    const float x = 0.0137f * float(i), y = 0.0071f * float(i);
+    EXPECT_EQ(litter_at(x, y, 0.002f, 0.0f, 0.0f), kFloor);
+    EXPECT_EQ(litter_at(x, y, 0.002f, 0.0f, litter_fade(0.04f)), kFloor);
+  }
+  EXPECT_EQ(litter_fade(0.0f), 1.0f);
+  EXPECT_EQ(litter_fade(kLitterFadeNear), 1.0f);
+  EXPECT_EQ(litter_fade(kLitterFadeFar), 0.0f);
+  EXPECT_GT(litter_fade(0.015f), litter_fade(0.025f));
+}
+
+TEST(FloorLitter, ALeafCentreHasItsLeafsColourFromTheCellHash) {
+  // Known answer from the hashes alone: a kept leaf of the top layer has its centre on its midrib (colour
+  // x (1 - kLitterRib)) unless a sprite of a later cell of that layer lies over it.
+  int leaves = 0, matched = 0;
+  for (int cy = 40; cy < 60; ++cy)
+    for (int cx = -10; cx < 10; ++cx) {
+      const int32_t top = 2 * (kLitterLayers - 1);
+      const uint32_t h1 = lattice_hash(cx, cy, top, kGroundLitterSalt), h2 = lattice_hash(cx, cy, top + 1, kGroundLitterSalt);
+      const float pick = float(h2 >> 24) / 255.0f, kind = float((h2 >> 16) & 255u) / 255.0f;
+      if (pick >= kLitterDensity || kind >= 1.0f - kLitterTwigShare) continue;
+      ++leaves;
+      const float hue = float((h2 >> 8) & 255u) / 255.0f;
+      const float x = (float(cx) + float(h1 & 255u) / 255.0f) * kLitterCell;
+      const float y = (float(cy) + float((h1 >> 8) & 255u) / 255.0f) * kLitterCell;
+      const Vec3f c = litter_at(x, y, 1e-4f, 0.0f);
+      bool same = true;
+      for (int k = 0; k < 3; ++k)
+        same = same && std::abs(c[k] - mix(kLitterLeafDark[k], kLitterLeafLight[k], hue) * (1.0f - kLitterRib)) < 1e-5f;
+      matched += same;
+    }
+  EXPECT_GT(leaves, 300);
+  EXPECT_GT(matched, leaves / 2);
+}
+
+/// Largest colour change between points 1 mm apart along a 1 m line, and the range along it.
+void steps_along_a_line(float footprint, float& largest_step, float& range) {
+  largest_step = 0.0f;
+  float lo = 1.0f, hi = 0.0f;
+  float previous = litter_at(5.0f, 1.234f, footprint, 0.0f).x();
+  for (int i = 1; i < 1000; ++i) {
+    const float r = litter_at(5.0f + 0.001f * float(i), 1.234f, footprint, 0.0f).x();
+    largest_step = std::max(largest_step, std::abs(r - previous));
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+    previous = r;
+  }
+  range = hi - lo;
+}
+
+TEST(FloorLitter, EdgesAreAntialiasedOverThePixelsFootprint) {
+  float sharp_step = 0.0f, sharp_range = 0.0f, soft_step = 0.0f, soft_range = 0.0f;
+  steps_along_a_line(1e-4f, sharp_step, sharp_range);  // a pixel far smaller than the 1 mm spacing: hard edges
+  steps_along_a_line(0.01f, soft_step, soft_range);    // 1 cm pixels: an edge takes ten steps
+  EXPECT_GT(sharp_step, 0.5f * sharp_range);
+  EXPECT_GT(soft_range, 0.3f * sharp_range);
+  EXPECT_LT(soft_step, 0.3f * soft_range);
+}
+
+TEST(FloorLitter, TheFilterKeepsTheMeanColour) {
+  // A box filter moves ink around but keeps its amount: the mean over a patch barely depends on the footprint.
+  const auto mean_red = [](float footprint) {
+    double sum = 0.0;
+    for (int j = 0; j < 300; ++j)
+      for (int i = 0; i < 300; ++i) sum += litter_at(-4.0f + 0.002f * float(i), 7.0f + 0.002f * float(j), footprint, 0.0f).x();
+    return sum / 90000.0;
+  };
+  const double fine = mean_red(1e-4f), coarse = mean_red(0.015f);
+  EXPECT_NEAR(coarse, fine, 0.08 * (fine - double(kFloor.x())) + 0.002);
+}
+
+TEST(FloorLitter, SpritesTiltTheReliefWithinTheirLimit) {
+  float steepest = 0.0f;
+  for (int i = 0; i < 2000; ++i) {
+    Vec2f slope;
+    litter_at(0.0031f * float(i), 0.5f, 0.001f, 0.0f, 1.0f, &slope);
+    steepest = std::max(steepest, slope.norm());
+  }
+  const float limit = std::hypot(kLitterTilt, kLitterCurl);  // tilted along the leaf, curled across it
+  EXPECT_GT(steepest, 0.5f * limit);
+  EXPECT_LE(steepest, limit * 1.0001f);
+}
+
+}  // namespace
+}  // namespace silva::render
