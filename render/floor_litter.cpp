@@ -21,29 +21,43 @@ float band_cover(float x, float w, float half_f, float inv_f) {
 /// One sprite's shape, colour and tilt, drawn from its cell's two hashes.
 struct Sprite {
   float half_length, half_width_at_middle, tilt, curl, keep;
-  bool leaf;
+  bool leaf, taper;  ///< A leaf (midrib, curl); narrowing to pointed ends (leaves and blades).
   Vec3f colour;
 };
 
-Sprite sprite_of(uint32_t h1, uint32_t h2, float needles, float fresh) {
+/// The kinds' constants: leaf, blade, needle, twig.
+struct KindTable {
+  const float* leaf;
+  const float* blade;
+  const float* needle;
+  const float* twig;
+};
+
+/// The sprite of cell hashes h1, h2 over a floor of `m`.
+Sprite sprite_of(uint32_t h1, uint32_t h2, const LitterMix& m) {
   const float size = byte_value(h2, 0), hue = byte_value(h2, 8), kind = byte_value(h2, 16), pick = byte_value(h2, 24);
-  const bool twig = kind >= 1.0f - kLitterTwigShare;
-  const bool needle = !twig && kind < needles;
+  const float untwigged = 1.0f - kLitterTwigShare;
+  const bool twig = kind >= untwigged;
+  const bool blade = !twig && kind < m.grass * untwigged;
+  const bool needle = !twig && !blade && kind < (m.grass + m.needles * (1.0f - m.grass)) * untwigged;
   Sprite s{};
-  s.leaf = !twig && !needle;
+  s.leaf = !twig && !blade && !needle;
+  s.taper = s.leaf || blade;
   s.keep = pick < kLitterDensity ? 1.0f : 0.0f;
   s.tilt = (byte_value(h1 ^ h2, 4) * 2.0f - 1.0f) * kLitterTilt;
   s.curl = s.leaf ? kLitterCurl : 0.0f;
-  const float* half = s.leaf ? kLitterLeafHalf : needle ? kLitterNeedleHalf : kLitterTwigHalf;
+  const auto of = [&](const KindTable& t) { return s.leaf ? t.leaf : blade ? t.blade : needle ? t.needle : t.twig; };
+  const float* half = of({kLitterLeafHalf, kLitterBladeHalf, kLitterNeedleHalf, kLitterTwigHalf});
   s.half_length = half[0] + half[1] * size;
   const float width = kLitterLeafWidth[0] + kLitterLeafWidth[1] * byte_value(h1 ^ h2, 12);
-  s.half_width_at_middle = s.leaf     ? width * s.half_length
-                           : needle   ? kLitterNeedleHalfWidth
-                                      : kLitterTwigHalfWidth[0] + kLitterTwigHalfWidth[1] * hue;
-  const bool is_fresh = s.leaf && pick < kLitterDensity * fresh;
-  const float* dark = is_fresh ? kGroundFallenOrange : s.leaf ? kLitterLeafDark : needle ? kLitterNeedleDark : kLitterTwigDark;
+  s.half_width_at_middle = s.leaf   ? width * s.half_length
+                           : blade  ? kLitterBladeHalfWidth[0] + kLitterBladeHalfWidth[1] * hue
+                           : needle ? kLitterNeedleHalfWidth
+                                    : kLitterTwigHalfWidth[0] + kLitterTwigHalfWidth[1] * hue;
+  const bool is_fresh = s.leaf && pick < kLitterDensity * m.fresh;
+  const float* dark = is_fresh ? kGroundFallenOrange : of({kLitterLeafDark, kLitterBladeDark, kLitterNeedleDark, kLitterTwigDark});
   const float* light =
-      is_fresh ? kGroundFallenYellow : s.leaf ? kLitterLeafLight : needle ? kLitterNeedleLight : kLitterTwigLight;
+      is_fresh ? kGroundFallenYellow : of({kLitterLeafLight, kLitterBladeLight, kLitterNeedleLight, kLitterTwigLight});
   for (int k = 0; k < 3; ++k) s.colour[k] = mix(dark[k], light[k], hue);
   return s;
 }
@@ -62,7 +76,7 @@ void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, 
   const float ux = ax / len, uy = ay / len;
   const float u = rx * ux + ry * uy, across = ry * ux - rx * uy, v = std::abs(across);
   const float t = u / s.half_length;
-  const float half_width = s.leaf ? s.half_width_at_middle * (1.0f - t * t) : s.half_width_at_middle;
+  const float half_width = s.taper ? s.half_width_at_middle * (1.0f - t * t) : s.half_width_at_middle;
   const float presence = s.keep * weight;
   const float cover = band_cover(v, half_width, half_f, inv_f) * band_cover(u, s.half_length, half_f, inv_f) * presence;
   const float shadow = band_cover(v, half_width + kLitterShadowWidth, half_f, inv_f) *
@@ -84,8 +98,7 @@ float litter_fade(float footprint) {
   return 1.0f - smooth_weight(t);
 }
 
-void litter_sprites(float x, float y, float footprint, float needles, float fresh, float weight, Vec3f& c,
-                    Vec2f& slope) {
+void litter_sprites(float x, float y, float footprint, const LitterMix& litter, float weight, Vec3f& c, Vec2f& slope) {
   if (!(weight > 0.0f)) return;
   const float f = std::clamp(footprint, 1e-4f, kLitterWidestFilter);
   const float half_f = 0.5f * f, inv_f = 1.0f / f;
@@ -99,7 +112,7 @@ void litter_sprites(float x, float y, float footprint, float needles, float fres
         const uint32_t h2 = lattice_hash(ix + dx, iy + dy, 2 * layer + 1, kGroundLitterSalt);
         const float rx = (gx - (fx + float(dx)) - byte_value(h1, 0)) * kLitterCell;
         const float ry = (gy - (fy + float(dy)) - byte_value(h1, 8)) * kLitterCell;
-        lay_sprite(sprite_of(h1, h2, needles, fresh), h1, rx, ry, half_f, inv_f, weight, c, slope);
+        lay_sprite(sprite_of(h1, h2, litter), h1, rx, ry, half_f, inv_f, weight, c, slope);
       }
 }
 

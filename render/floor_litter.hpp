@@ -19,7 +19,8 @@ inline constexpr float kLitterCell = 0.06f;
 inline constexpr int kLitterLayers = 2;
 /// Share of cells that hold a sprite in each layer.
 inline constexpr float kLitterDensity = 0.95f;
-/// Share of sprites that are twigs (the rest leaves or needles, by the stand's needle share).
+/// Share of sprites that are twigs (the rest grass blades, needles or leaves, by the floor's grass
+/// cover and needle share).
 inline constexpr float kLitterTwigShare = 0.05f;
 /// Width (metres) of the contact shadow around each sprite, and how much it darkens the floor.
 inline constexpr float kLitterShadowWidth = 0.004f;
@@ -44,12 +45,16 @@ inline constexpr float kLitterLeafWidth[2] = {0.4f, 0.3f};        ///< Leaf half
 inline constexpr float kLitterNeedleHalf[2] = {0.008f, 0.017f};  ///< Needles 1.6 – 5 cm long.
 inline constexpr float kLitterNeedleHalfWidth = 0.0006f;        ///< Needles 1.2 mm wide.
 inline constexpr float kLitterTwigHalf[2] = {0.028f, 0.014f};    ///< Twigs 5.6 – 8.4 cm long.
+inline constexpr float kLitterBladeHalf[2] = {0.015f, 0.025f};   ///< Grass blades 3 – 8 cm long, lying or bent over,
+inline constexpr float kLitterBladeHalfWidth[2] = {0.0008f, 0.0008f};  ///< 1.6 – 3.2 mm wide, pointed.
 inline constexpr float kLitterTwigHalfWidth[2] = {0.0012f, 0.0018f};  ///< Twigs 2.4 – 6 mm thick.
 /// Linear-RGB colours, dark and light end of each kind (a sprite's hue mixes them).
 inline constexpr float kLitterLeafDark[3] = {0.055f, 0.037f, 0.024f};
 inline constexpr float kLitterLeafLight[3] = {0.165f, 0.113f, 0.066f};
 inline constexpr float kLitterNeedleDark[3] = {0.07f, 0.04f, 0.022f};
 inline constexpr float kLitterNeedleLight[3] = {0.17f, 0.1f, 0.05f};
+inline constexpr float kLitterBladeDark[3] = {0.03f, 0.048f, 0.012f};
+inline constexpr float kLitterBladeLight[3] = {0.11f, 0.13f, 0.04f};
 inline constexpr float kLitterTwigDark[3] = {0.04f, 0.033f, 0.027f};
 inline constexpr float kLitterTwigLight[3] = {0.12f, 0.1f, 0.085f};
 
@@ -57,13 +62,17 @@ inline constexpr float kLitterTwigLight[3] = {0.12f, 0.1f, 0.085f};
 /// 0 from kLitterFadeFar.
 float litter_fade(float footprint);
 
+/// What the sprites at a floor point are made of.
+struct LitterMix {
+  float grass = 0.0f;    ///< The floor's grass cover: this share of the sprites are grass blades.
+  float needles = 0.0f;  ///< The stand's needle share (0 broadleaf … 1 conifer) of the rest.
+  float fresh = 0.0f;    ///< Share of the leaves that are freshly fallen (autumn colours).
+};
+
 /// Composites the litter sprites over the floor colour `c` and relief gradient `slope` (metres per
-/// metre) at world point (x, y), seen with a pixel footprint of `footprint` metres. `needles` is the
-/// stand's needle share (0 broadleaf … 1 conifer), `fresh` the share of leaves that are freshly
-/// fallen (autumn colours), `weight` how much litter lies here (0 on grass, moss and bare soil;
-/// litter_fade included). Sprites lie over each other in the order (layer, cell y, cell x), so
-/// overlaps agree between neighbouring points.
-void litter_sprites(float x, float y, float footprint, float needles, float fresh, float weight, Vec3f& c,
-                    Vec2f& slope);
+/// metre) at world point (x, y), seen with a pixel footprint of `footprint` metres; `weight` is how
+/// much litter lies here (0 on moss and bare soil; litter_fade included). Sprites lie over each other
+/// in the order (layer, cell y, cell x), so overlaps agree between neighbouring points.
+void litter_sprites(float x, float y, float footprint, const LitterMix& litter, float weight, Vec3f& c, Vec2f& slope);
 
 }  // namespace silva::render

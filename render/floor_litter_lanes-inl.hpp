@@ -29,82 +29,103 @@ inline VF band_cover_lanes(VF x, VF w, VF half_f, VF inv_f) {
   return hn::Min(hn::Mul(hn::Max(inside, hn::Zero(d)), inv_f), hn::Set(d, 1.0f));
 }
 
-/// The constant of each sprite kind on lanes: `leaf`, `needle` or `twig` where the masks say.
-template <class M>
-VF per_kind(M leaf, M needle, float leaf_value, float needle_value, float twig_value) {
+/// floor_litter.hpp's LitterMix on lanes, with the litter's weight.
+struct LitterMixLanes {
+  VF grass, needles, fresh, weight;
+};
+
+/// A sprite of each lane (floor_litter.cpp's Sprite) with its kind masks.
+struct SpriteLanes {
+  hn::Mask<DF> leaf, blade, needle, taper, fresh;
+  VF half_length, middle, tilt, keep, hue;
+};
+
+/// The constant of each sprite kind on lanes: a leaf, blade, needle or twig where the masks say.
+inline VF per_kind(const SpriteLanes& s, float leaf, float blade, float needle, float twig) {
   const DF d;
-  return hn::IfThenElse(leaf, hn::Set(d, leaf_value), hn::IfThenElse(needle, hn::Set(d, needle_value), hn::Set(d, twig_value)));
+  return hn::IfThenElse(s.leaf, hn::Set(d, leaf),
+                        hn::IfThenElse(s.blade, hn::Set(d, blade), hn::IfThenElse(s.needle, hn::Set(d, needle), hn::Set(d, twig))));
 }
 
-/// One cell's sprite over the lanes' colours `c` and slope (sx, sy): floor_litter.cpp's loop body.
-/// `g` and `f` are the points in grid units and their cells' floors; `frame` = {half_f, inv_f}.
-inline void litter_cell_lanes(VU h1, VU h2, const VF* g, const VF* f, int dx, int dy, const VF* frame, VF needles,
-                              VF fresh, VF weight, VF* c, VF& sx, VF& sy) {
+/// floor_litter.cpp's sprite_of on lanes (the colours are picked where the sprite is laid).
+inline SpriteLanes sprite_lanes(VU h1, VU h2, const LitterMixLanes& m) {
   const DF d;
   const VF one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
-  const VF size = byte_value_lanes(h2, 0), hue = byte_value_lanes(h2, 8), kind = byte_value_lanes(h2, 16);
-  const VF pick = byte_value_lanes(h2, 24);
-  const auto twig = hn::Ge(kind, hn::Set(d, 1.0f - kLitterTwigShare));
-  const auto needle = hn::AndNot(twig, hn::Lt(kind, needles));
-  const auto leaf = hn::Not(hn::Or(twig, needle));
-  const VF keep = hn::IfThenElseZero(hn::Lt(pick, hn::Set(d, kLitterDensity)), one);
-  const VF tilt = hn::Mul(hn::Sub(hn::Mul(byte_value_lanes(hn::Xor(h1, h2), 4), two), one), hn::Set(d, kLitterTilt));
-  const VF half_length = hn::Add(per_kind(leaf, needle, kLitterLeafHalf[0], kLitterNeedleHalf[0], kLitterTwigHalf[0]),
-                                 hn::Mul(per_kind(leaf, needle, kLitterLeafHalf[1], kLitterNeedleHalf[1], kLitterTwigHalf[1]), size));
-  const VF twig_width = hn::Add(hn::Set(d, kLitterTwigHalfWidth[0]), hn::Mul(hn::Set(d, kLitterTwigHalfWidth[1]), hue));
+  const VF size = byte_value_lanes(h2, 0), kind = byte_value_lanes(h2, 16), pick = byte_value_lanes(h2, 24);
+  SpriteLanes s;
+  s.hue = byte_value_lanes(h2, 8);
+  const VF untwigged = hn::Set(d, 1.0f - kLitterTwigShare);
+  const auto twig = hn::Ge(kind, untwigged);
+  s.blade = hn::AndNot(twig, hn::Lt(kind, hn::Mul(m.grass, untwigged)));
+  const VF needle_bound = hn::Mul(hn::Add(m.grass, hn::Mul(m.needles, hn::Sub(one, m.grass))), untwigged);
+  s.needle = hn::AndNot(hn::Or(twig, s.blade), hn::Lt(kind, needle_bound));
+  s.leaf = hn::Not(hn::Or(hn::Or(twig, s.blade), s.needle));
+  s.taper = hn::Or(s.leaf, s.blade);
+  s.keep = hn::IfThenElseZero(hn::Lt(pick, hn::Set(d, kLitterDensity)), one);
+  s.tilt = hn::Mul(hn::Sub(hn::Mul(byte_value_lanes(hn::Xor(h1, h2), 4), two), one), hn::Set(d, kLitterTilt));
+  s.half_length = hn::Add(per_kind(s, kLitterLeafHalf[0], kLitterBladeHalf[0], kLitterNeedleHalf[0], kLitterTwigHalf[0]),
+                          hn::Mul(per_kind(s, kLitterLeafHalf[1], kLitterBladeHalf[1], kLitterNeedleHalf[1], kLitterTwigHalf[1]), size));
   const VF width = hn::Add(hn::Set(d, kLitterLeafWidth[0]), hn::Mul(hn::Set(d, kLitterLeafWidth[1]), byte_value_lanes(hn::Xor(h1, h2), 12)));
-  const VF middle = hn::IfThenElse(leaf, hn::Mul(width, half_length),
-                                   hn::IfThenElse(needle, hn::Set(d, kLitterNeedleHalfWidth), twig_width));
-  const auto fresh_leaf = hn::And(leaf, hn::Lt(pick, hn::Mul(hn::Set(d, kLitterDensity), fresh)));
-  const VF cell = hn::Set(d, kLitterCell);
-  const VF rx = hn::Mul(hn::Sub(hn::Sub(g[0], hn::Add(f[0], hn::Set(d, float(dx)))), byte_value_lanes(h1, 0)), cell);
-  const VF ry = hn::Mul(hn::Sub(hn::Sub(g[1], hn::Add(f[1], hn::Set(d, float(dy)))), byte_value_lanes(h1, 8)), cell);
+  const VF blade_width = hn::Add(hn::Set(d, kLitterBladeHalfWidth[0]), hn::Mul(hn::Set(d, kLitterBladeHalfWidth[1]), s.hue));
+  const VF twig_width = hn::Add(hn::Set(d, kLitterTwigHalfWidth[0]), hn::Mul(hn::Set(d, kLitterTwigHalfWidth[1]), s.hue));
+  s.middle = hn::IfThenElse(s.leaf, hn::Mul(width, s.half_length),
+                            hn::IfThenElse(s.blade, blade_width, hn::IfThenElse(s.needle, hn::Set(d, kLitterNeedleHalfWidth), twig_width)));
+  s.fresh = hn::And(s.leaf, hn::Lt(pick, hn::Mul(hn::Set(d, kLitterDensity), m.fresh)));
+  return s;
+}
+
+/// floor_litter.cpp's lay_sprite on lanes: sprite `s` (cell hash h1), its centre (rx, ry) metres from
+/// each lane's point, over the lanes' colours `c` and slope (sx, sy); `frame` = {half_f, inv_f}.
+inline void lay_sprite_lanes(const SpriteLanes& s, VU h1, VF rx, VF ry, const VF* frame, VF weight, VF* c, VF& sx, VF& sy) {
+  const DF d;
+  const VF one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
   const VF reach = hn::Set(d, kLitterShadowWidth + 1e-4f);  // floor_litter.cpp's kLitterReach
-  const VF reach_u = hn::Add(hn::Add(half_length, reach), frame[0]), reach_v = hn::Add(hn::Add(middle, reach), frame[0]);
-  const auto near = hn::And(hn::Gt(keep, hn::Zero(d)), hn::Lt(hn::Add(hn::Mul(rx, rx), hn::Mul(ry, ry)),
-                                                             hn::Add(hn::Mul(reach_u, reach_u), hn::Mul(reach_v, reach_v))));
+  const VF reach_u = hn::Add(hn::Add(s.half_length, reach), frame[0]), reach_v = hn::Add(hn::Add(s.middle, reach), frame[0]);
+  const auto near = hn::And(hn::Gt(s.keep, hn::Zero(d)), hn::Lt(hn::Add(hn::Mul(rx, rx), hn::Mul(ry, ry)),
+                                                               hn::Add(hn::Mul(reach_u, reach_u), hn::Mul(reach_v, reach_v))));
   if (hn::AllFalse(d, near)) return;  // it reaches none of the points (the lanes it misses gain nothing from it)
   const VF ax = hn::Sub(hn::Mul(byte_value_lanes(h1, 16), two), one), ay = hn::Sub(hn::Mul(byte_value_lanes(h1, 24), two), one);
   const VF len = hn::Sqrt(hn::Add(hn::Add(hn::Mul(ax, ax), hn::Mul(ay, ay)), hn::Set(d, 1e-8f)));
   const VF ux = hn::Div(ax, len), uy = hn::Div(ay, len);
   const VF u = hn::Add(hn::Mul(rx, ux), hn::Mul(ry, uy)), across = hn::Sub(hn::Mul(ry, ux), hn::Mul(rx, uy));
   const VF v = hn::Abs(across);
-  const VF t = hn::Div(u, half_length);
-  const VF half_width = hn::IfThenElse(leaf, hn::Mul(middle, hn::Sub(one, hn::Mul(t, t))), middle);
-  const VF presence = hn::Mul(keep, weight);
+  const VF t = hn::Div(u, s.half_length);
+  const VF half_width = hn::IfThenElse(s.taper, hn::Mul(s.middle, hn::Sub(one, hn::Mul(t, t))), s.middle);
+  const VF presence = hn::Mul(s.keep, weight);
   const VF cover = hn::Mul(hn::Mul(band_cover_lanes(v, half_width, frame[0], frame[1]),
-                                   band_cover_lanes(u, half_length, frame[0], frame[1])), presence);
+                                   band_cover_lanes(u, s.half_length, frame[0], frame[1])), presence);
   const VF rim = hn::Set(d, kLitterShadowWidth);
   const VF shadow = hn::Mul(hn::Mul(band_cover_lanes(v, hn::Add(half_width, rim), frame[0], frame[1]),
-                                    band_cover_lanes(u, hn::Add(half_length, rim), frame[0], frame[1])), presence);
-  const VF rib = hn::IfThenElseZero(leaf, hn::Mul(band_cover_lanes(v, hn::Set(d, kLitterRibHalfWidth), frame[0], frame[1]),
-                                                  band_cover_lanes(u, hn::Mul(hn::Set(d, 0.9f), half_length), frame[0], frame[1])));
+                                    band_cover_lanes(u, hn::Add(s.half_length, rim), frame[0], frame[1])), presence);
+  const VF rib = hn::IfThenElseZero(s.leaf, hn::Mul(band_cover_lanes(v, hn::Set(d, kLitterRibHalfWidth), frame[0], frame[1]),
+                                                    band_cover_lanes(u, hn::Mul(hn::Set(d, 0.9f), s.half_length), frame[0], frame[1])));
   const VF rib_shade = hn::Sub(one, hn::Mul(hn::Set(d, kLitterRib), rib));
   const VF shade = hn::Sub(one, hn::Mul(hn::Set(d, kLitterShadow), shadow));
   for (int k = 0; k < 3; ++k) {
-    const VF dark = hn::IfThenElse(fresh_leaf, hn::Set(d, kGroundFallenOrange[k]),
-                                   per_kind(leaf, needle, kLitterLeafDark[k], kLitterNeedleDark[k], kLitterTwigDark[k]));
-    const VF light = hn::IfThenElse(fresh_leaf, hn::Set(d, kGroundFallenYellow[k]),
-                                    per_kind(leaf, needle, kLitterLeafLight[k], kLitterNeedleLight[k], kLitterTwigLight[k]));
-    c[k] = mix_lanes(hn::Mul(c[k], shade), hn::Mul(mix_lanes(dark, light, hue), rib_shade), cover);
+    const VF dark = hn::IfThenElse(s.fresh, hn::Set(d, kGroundFallenOrange[k]),
+                                   per_kind(s, kLitterLeafDark[k], kLitterBladeDark[k], kLitterNeedleDark[k], kLitterTwigDark[k]));
+    const VF light = hn::IfThenElse(s.fresh, hn::Set(d, kGroundFallenYellow[k]),
+                                    per_kind(s, kLitterLeafLight[k], kLitterBladeLight[k], kLitterNeedleLight[k], kLitterTwigLight[k]));
+    c[k] = mix_lanes(hn::Mul(c[k], shade), hn::Mul(mix_lanes(dark, light, s.hue), rib_shade), cover);
   }
-  const VF side = hn::CopySign(hn::IfThenElseZero(leaf, hn::Set(d, kLitterCurl)), across);
-  sx = mix_lanes(sx, hn::Sub(hn::Mul(ux, tilt), hn::Mul(uy, side)), cover);
-  sy = mix_lanes(sy, hn::Add(hn::Mul(uy, tilt), hn::Mul(ux, side)), cover);
+  const VF side = hn::CopySign(hn::IfThenElseZero(s.leaf, hn::Set(d, kLitterCurl)), across);
+  sx = mix_lanes(sx, hn::Sub(hn::Mul(ux, s.tilt), hn::Mul(uy, side)), cover);
+  sy = mix_lanes(sy, hn::Add(hn::Mul(uy, s.tilt), hn::Mul(ux, side)), cover);
 }
 
 /// litter_sprites on lanes: the sprites over the lanes' colours `c` and relief slope (sx, sy) at
-/// points (x, y); lanes whose `weight` is not above 0 keep theirs unchanged, as the scalar function does.
-inline void litter_sprites_lanes(VF x, VF y, VF footprint, VF needles, VF fresh, VF weight, VF* c, VF& sx, VF& sy) {
+/// points (x, y); lanes whose weight is not above 0 keep theirs unchanged, as the scalar function does.
+inline void litter_sprites_lanes(VF x, VF y, VF footprint, const LitterMixLanes& m, VF* c, VF& sx, VF& sy) {
   const DF d;
   const DU du;
-  const auto drawn = hn::Gt(weight, hn::Zero(d));
+  const auto drawn = hn::Gt(m.weight, hn::Zero(d));
   if (hn::AllFalse(d, drawn)) return;
   const VF fp = hn::Min(hn::Max(footprint, hn::Set(d, 1e-4f)), hn::Set(d, kLitterWidestFilter));
   const VF frame[2] = {hn::Mul(hn::Set(d, 0.5f), fp), hn::Div(hn::Set(d, 1.0f), fp)};
-  const VF g[2] = {hn::Mul(x, hn::Set(d, 1.0f / kLitterCell)), hn::Mul(y, hn::Set(d, 1.0f / kLitterCell))};
-  const VF f[2] = {hn::Floor(g[0]), hn::Floor(g[1])};
-  const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), f[0])), iy = hn::BitCast(du, hn::ConvertTo(DI(), f[1]));
+  const VF gx = hn::Mul(x, hn::Set(d, 1.0f / kLitterCell)), gy = hn::Mul(y, hn::Set(d, 1.0f / kLitterCell));
+  const VF fx = hn::Floor(gx), fy = hn::Floor(gy);
+  const VU ix = hn::BitCast(du, hn::ConvertTo(DI(), fx)), iy = hn::BitCast(du, hn::ConvertTo(DI(), fy));
+  const VF cell = hn::Set(d, kLitterCell);
   VF nc[3] = {c[0], c[1], c[2]}, nx = sx, ny = sy;
   for (int layer = 0; layer < kLitterLayers; ++layer)
     for (int dy = -1; dy <= 1; ++dy)
@@ -114,7 +135,9 @@ inline void litter_sprites_lanes(VF x, VF y, VF footprint, VF needles, VF fresh,
         const uint32_t z = 2u * uint32_t(layer);
         const VU h1 = lattice_hash_of_mix(hn::Xor(mixed, hn::Set(du, z * 0xcb1ab31fu)), kGroundLitterSalt);
         const VU h2 = lattice_hash_of_mix(hn::Xor(mixed, hn::Set(du, (z + 1u) * 0xcb1ab31fu)), kGroundLitterSalt);
-        litter_cell_lanes(h1, h2, g, f, dx, dy, frame, needles, fresh, weight, nc, nx, ny);
+        const VF rx = hn::Mul(hn::Sub(hn::Sub(gx, hn::Add(fx, hn::Set(d, float(dx)))), byte_value_lanes(h1, 0)), cell);
+        const VF ry = hn::Mul(hn::Sub(hn::Sub(gy, hn::Add(fy, hn::Set(d, float(dy)))), byte_value_lanes(h1, 8)), cell);
+        lay_sprite_lanes(sprite_lanes(h1, h2, m), h1, rx, ry, frame, m.weight, nc, nx, ny);
       }
   for (int k = 0; k < 3; ++k) c[k] = hn::IfThenElse(drawn, nc[k], c[k]);
   sx = hn::IfThenElse(drawn, nx, sx);

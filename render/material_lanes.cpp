@@ -68,8 +68,9 @@ void ground_lanes(VF px, VF py, VF nz, VF footprint, const FloorLook& floor, VF*
   const VF blotch_relief = hn::Sub(one, sprites);
   sx = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dx, kl), blotch_relief), scaled(speckle_dx, ks)), fine_detail);
   sy = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dy, kl), blotch_relief), scaled(speckle_dy, ks)), fine_detail);
-  const VF litter = hn::Mul(hn::Mul(hn::Mul(sprites, hn::Sub(one, grass)), hn::Sub(one, scaled(moss, 0.7f))), hn::Sub(one, soil));
-  litter_sprites_lanes(px, py, footprint, needles, fallen, litter, c, sx, sy);
+  const VF litter = hn::Mul(hn::Mul(sprites, hn::Sub(one, scaled(moss, 0.7f))), hn::Sub(one, soil));
+  const VF blades = scaled(grass, 1.0f / 0.8f);  // a full grass cover (0.8) grows only blades
+  litter_sprites_lanes(px, py, footprint, {blades, needles, fallen, litter}, c, sx, sy);
 }
 
 /// ground_albedo_row for one target.

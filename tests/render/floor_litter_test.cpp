@@ -14,20 +14,27 @@ namespace {
 const Vec3f kFloor(0.1f, 0.1f, 0.1f);  ///< A grey floor under the sprites.
 
 /// The floor colour after the sprites at (x, y).
-Vec3f litter_at(float x, float y, float footprint, float needles, float weight = 1.0f, Vec2f* slope = nullptr) {
+Vec3f litter_at(float x, float y, float footprint, float needles, float weight = 1.0f, Vec2f* slope = nullptr,
+                float grass = 0.0f) {
   Vec3f c = kFloor;
   Vec2f s(0.0f, 0.0f);
-  litter_sprites(x, y, footprint, needles, 0.0f, weight, c, s);
+  litter_sprites(x, y, footprint, {grass, needles, 0.0f}, weight, c, s);
   if (slope) *slope = s;
   return c;
 }
 
-/// Share of a 1 m square's points (5 mm apart) that the sprites change, at a 2 mm footprint.
-float covered_share(float needles) {
-  int changed = 0, total = 0;
+/// Share of a 1 m square's points (5 mm apart) that the sprites change, at a 2 mm footprint; `greener`
+/// (if set) receives the share of the points coloured by a sprite whose green exceeds their red.
+float covered_share(float needles, float grass = 0.0f, float* greener = nullptr) {
+  int changed = 0, green = 0, coloured = 0, total = 0;
   for (int j = 0; j < 200; ++j)
-    for (int i = 0; i < 200; ++i, ++total)
-      changed += (litter_at(3.0f + 0.005f * float(i), -2.0f + 0.005f * float(j), 0.002f, needles) - kFloor).norm() > 0.01f;
+    for (int i = 0; i < 200; ++i, ++total) {
+      const Vec3f c = litter_at(3.0f + 0.005f * float(i), -2.0f + 0.005f * float(j), 0.002f, needles, 1.0f, nullptr, grass);
+      changed += (c - kFloor).norm() > 0.01f;
+      green += c.y() > c.x();
+      coloured += c.maxCoeff() - c.minCoeff() > 0.005f;  // a sprite, not only its shadow on the grey floor
+    }
+  if (greener) *greener = float(green) / float(std::max(coloured, 1));
   return float(changed) / float(total);
 }
 
@@ -37,6 +44,15 @@ TEST(FloorLitter, LeavesCoverPartOfABroadleafFloorAndNeedlesLess) {
   EXPECT_LT(leaves, 0.8f);
   EXPECT_GT(needles, 0.03f);  // thin needles and a few twigs
   EXPECT_LT(needles, 0.5f * leaves);
+}
+
+TEST(FloorLitter, OnGrassMostSpritesAreGreenBlades) {
+  float litter_green = 1.0f, grass_green = 0.0f;
+  covered_share(0.0f, 0.0f, &litter_green);
+  const float blades = covered_share(0.0f, 1.0f, &grass_green);
+  EXPECT_LT(litter_green, 0.01f);  // leaves are brown
+  EXPECT_GT(grass_green, 0.6f);    // blades; twigs (wider) aside
+  EXPECT_GT(blades, 0.05f);
 }
 
 TEST(FloorLitter, NoWeightOrAFarFootprintLeavesTheFloorAlone) {

@@ -107,8 +107,7 @@ Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil
   }
   soil_weight = soil;
   Vec2f slope(0.0f, 0.0f);  // the sprites' tilt: not checked here
-  litter_sprites(p.x(), p.y(), footprint, needles, 0.0f, sprites * (1.0f - grass) * (1.0f - moss * 0.7f) * (1.0f - soil), c,
-                 slope);
+  litter_sprites(p.x(), p.y(), footprint, {grass * (1.0f / 0.8f), needles, 0.0f}, sprites * (1.0f - moss * 0.7f) * (1.0f - soil), c, slope);
   return c;
 }
 
