@@ -17,6 +17,22 @@
 HWY_BEFORE_NAMESPACE();
 namespace silva::render::HWY_NAMESPACE {
 
+/// The moss's texture near the camera (materials.hpp): its brightness factor on kGroundMoss, 1 where
+/// the moss or its detail is absent, and the cushions' relief gradient added to (sx, sy).
+VF moss_cushions_lanes(VF px, VF py, VF footprint, VF moss, VF& sx, VF& sy) {
+  const DF d;
+  const VF shown = hn::Mul(hn::Sub(hn::Set(d, 1.0f), smoothstep_lanes(kMossDetailNear, kMossDetailFar, footprint)), moss);
+  if (hn::AllTrue(d, hn::Eq(shown, hn::Zero(d)))) return hn::Set(d, 1.0f);
+  VF cdx, cdy, tdx, tdy;
+  const VF cushion = value_noise2_lanes(hn::Mul(px, hn::Set(d, 40.0f)), hn::Mul(py, hn::Set(d, 40.0f)), kGroundCushionSalt, &cdx, &cdy);
+  const VF tips = value_noise2_lanes(hn::Mul(px, hn::Set(d, 110.0f)), hn::Mul(py, hn::Set(d, 110.0f)), kGroundCushionSalt + 1, &tdx, &tdy);
+  const VF kc = hn::Set(d, 40.0f * kMossCushionRelief), kt = hn::Set(d, 110.0f * kMossTipRelief);
+  sx = hn::Add(sx, hn::Mul(hn::Add(hn::Mul(cdx, kc), hn::Mul(tdx, kt)), shown));
+  sy = hn::Add(sy, hn::Mul(hn::Add(hn::Mul(cdy, kc), hn::Mul(tdy, kt)), shown));
+  const VF mixed = hn::Add(hn::Mul(cushion, hn::Set(d, 0.7f)), hn::Mul(tips, hn::Set(d, 0.3f)));
+  return hn::Add(hn::Set(d, 1.0f), hn::Mul(hn::Mul(hn::Sub(mixed, hn::Set(d, 0.5f)), hn::Set(d, 0.9f)), shown));
+}
+
 /// The forest-floor formula of ground_albedo_row (materials.hpp) for one vector of points: colour
 /// `c`, relief slope (sx, sy) and bare-soil weight, then the litter sprites (floor_litter.hpp) on top.
 void ground_lanes(VF px, VF py, VF nz, VF footprint, const FloorLook& floor, VF* c, VF& sx, VF& sy, VF& soil) {
@@ -51,11 +67,16 @@ void ground_lanes(VF px, VF py, VF nz, VF footprint, const FloorLook& floor, VF*
     const VF hue_field = fbm2_lanes(scaled(px, 1.5f), scaled(py, 1.5f), 2, kGroundFallenSalt + 8);
     fallen_hue = mix_lanes(hue_field, smoothstep_lanes(0.3f, 0.7f, leaf), fine_detail);
   }
+  const float kl = 9.0f * kGroundLeafRelief, ks = 23.0f * kGroundSpeckleRelief;  // relief heights in metres
+  const VF blotch_relief = hn::Sub(one, sprites);
+  sx = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dx, kl), blotch_relief), scaled(speckle_dx, ks)), fine_detail);
+  sy = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dy, kl), blotch_relief), scaled(speckle_dy, ks)), fine_detail);
+  const VF moss_tone = moss_cushions_lanes(px, py, footprint, moss, sx, sy);
   for (int k = 0; k < 3; ++k) {
     VF v = mix_lanes(hn::Set(d, kGroundLeafLitter[k]), hn::Set(d, kGroundNeedleLitter[k]), needles);
     v = mix_channel(v, kGroundDryLeaves, k, dry);
     v = mix_channel(v, kGroundGrass, k, grass);
-    v = mix_channel(v, kGroundMoss, k, moss);
+    v = mix_lanes(v, hn::Mul(hn::Set(d, kGroundMoss[k]), moss_tone), moss);
     if (fallen_leaves > 0.0f) {
       const VF fresh = hn::Add(hn::Set(d, kGroundFallenOrange[k]),
                                hn::Mul(fallen_hue, hn::Set(d, kGroundFallenYellow[k] - kGroundFallenOrange[k])));
@@ -64,10 +85,6 @@ void ground_lanes(VF px, VF py, VF nz, VF footprint, const FloorLook& floor, VF*
     v = mix_channel(v, kGroundSoil, k, soil);
     c[k] = hn::Mul(v, brightness);
   }
-  const float kl = 9.0f * kGroundLeafRelief, ks = 23.0f * kGroundSpeckleRelief;  // relief heights in metres
-  const VF blotch_relief = hn::Sub(one, sprites);
-  sx = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dx, kl), blotch_relief), scaled(speckle_dx, ks)), fine_detail);
-  sy = hn::Mul(hn::Add(hn::Mul(scaled(leaf_dy, kl), blotch_relief), scaled(speckle_dy, ks)), fine_detail);
   const VF litter = hn::Mul(hn::Mul(sprites, hn::Sub(one, scaled(moss, 0.7f))), hn::Sub(one, soil));
   const VF blades = scaled(grass, 1.0f / 0.8f);  // a full grass cover (0.8) grows only blades
   litter_sprites_lanes(px, py, footprint, {blades, needles, fallen, litter}, c, sx, sy);

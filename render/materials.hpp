@@ -80,7 +80,7 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 ///   leaf = value_noise2(9 p, leaf); c = mix(leaf_litter, needle_litter, needles)
 ///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) fine_detail)
 ///   c = mix(c, grass, 0.8 smoothstep(0.62, 0.78, fbm2(0.06 p, 2, grass)) flat)
-///   c = mix(c, moss, 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
+///   c = mix(c, moss colour (kMossDetailNear), 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
 ///   with floor.fallen_leaves f > 0 (autumn): fallen = f smoothstep(0.25, 0.55, fbm2(0.4 p, 2, fallen)) (1 - 0.7 needles),
 ///   hue = mix(fbm2(1.5 p, 2, fallen + 8), smoothstep(0.3, 0.7, leaf), fine_detail),
 ///   c = mix(c, mix(fallen_orange, fallen_yellow, hue), fallen): fresh leaves over grass and moss
@@ -97,6 +97,16 @@ void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float
 /// How much fresh leaf litter a season lays on the forest floor (FloorLook::fallen_leaves):
 /// autumn 0.8, else 0 (winter's litter lies under the snow or has browned into the old litter).
 float fallen_leaf_cover(Season season);
+
+/// Moss texture near the camera: cushions (value noise at 40/m) and their tips (110/m) brighten and
+/// darken kGroundMoss by up to 45 % and bump the relief, faded out from kMossDetailNear to
+/// kMossDetailFar metres per pixel:
+///   shown = (1 - smoothstep(near, far, footprint)) moss
+///   moss colour = kGroundMoss (1 + ((0.7 cushion + 0.3 tips) - 0.5) 0.9 shown)
+inline constexpr float kMossDetailNear = 0.004f;
+inline constexpr float kMossDetailFar = 0.02f;  ///< See kMossDetailNear.
+inline constexpr float kMossCushionRelief = 0.006f;  ///< Relief height per unit of the cushion noise (metres).
+inline constexpr float kMossTipRelief = 0.002f;      ///< Relief height per unit of the tip noise (metres).
 
 /// Relief height of the forest floor per unit of its leaf-sized noise (metres): leaves lying on each other.
 inline constexpr float kGroundLeafRelief = 0.012f;

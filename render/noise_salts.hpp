@@ -17,6 +17,7 @@ enum NoiseSalt : uint32_t {
   kGroundLeafSalt = 0x1a0,   ///< Leaf-sized blotches (and + 1: speckle).
   kGroundFallenSalt = 0x1c0, ///< Drifts of freshly fallen autumn leaves (and + 8: their hue).
   kGroundLitterSalt = 0x1e0, ///< Single leaves, needles and twigs (render/floor_litter.hpp).
+  kGroundCushionSalt = 0x200, ///< Moss cushions and their tips (and + 1).
   // Trail (render/trail_material.cpp).
   kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
   kTrailStone = 0x420,       ///< Embedded stones.

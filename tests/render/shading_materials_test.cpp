@@ -96,12 +96,19 @@ Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil
   const float speckle = value_noise2(p.x() * 23.0f, p.y() * 23.0f, kGroundLeafSalt + 1);
   const float brightness = (1.0f + (grain * 0.6f - 0.3f) * (1.0f - smoothstep(0.1f, 0.4f, footprint))) *
                            (1.0f + (speckle * 0.8f - 0.4f) * fine_detail);
+  const float moss_shown = (1.0f - smoothstep(kMossDetailNear, kMossDetailFar, footprint)) * moss;
+  float moss_tone = 1.0f;
+  if (moss_shown > 0.0f) {
+    const float cushion = value_noise2(p.x() * 40.0f, p.y() * 40.0f, kGroundCushionSalt);
+    const float tips = value_noise2(p.x() * 110.0f, p.y() * 110.0f, kGroundCushionSalt + 1);
+    moss_tone = 1.0f + ((cushion * 0.7f + tips * 0.3f) - 0.5f) * 0.9f * moss_shown;
+  }
   Vec3f c;
   for (int k = 0; k < 3; ++k) {
     float v = mix(kGroundLeafLitter[k], kGroundNeedleLitter[k], needles);
     v = mix(v, kGroundDryLeaves[k], dry);
     v = mix(v, kGroundGrass[k], grass);
-    v = mix(v, kGroundMoss[k], moss);
+    v = mix(v, kGroundMoss[k] * moss_tone, moss);
     v = mix(v, kGroundSoil[k], soil);
     c[k] = v * brightness;
   }
@@ -118,6 +125,13 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     p.emplace_back(float(i) * 3.7f - 60.0f, float(i * i % 37) * 1.3f - 20.0f, float(i % 5));
     n.push_back(Vec3f(0.1f * float(i % 9), 0.0f, 1.0f - 0.02f * float(i % 13)).normalized());
     footprint.push_back(0.011f * float(i % 41));  // 0 .. 0.44 m: every detail fade
+  }
+  float moss_x = 0.0f;  // a moss carpet: the first point of a line where the moss noise is high
+  while (fbm2(moss_x * 0.15f, 5.0f * 0.15f, 3, kGroundMossSalt) < 0.75f) moss_x += 1.3f;
+  for (int i = 0; i < 101; ++i) {  // its cushions up close
+    p.emplace_back(moss_x + 0.0017f * float(i), 5.0f + 0.0011f * float(i % 13), 0.0f);
+    n.emplace_back(0.0f, 0.0f, 1.0f);
+    footprint.push_back(0.0002f * float(i));  // 0 .. 2 cm: the cushions in full to faded
   }
   for (int i = 0; i < 403; ++i) {  // near the camera, where the litter sprites lie: 1.3 mm apart
     p.emplace_back(12.3f + 0.0013f * float(i), -7.1f + 0.0009f * float(i % 97), 0.2f);
