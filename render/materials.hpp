@@ -76,9 +76,10 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 /// there) into out[i], one point per SIMD lane; `soil` (may be null) receives each point's
 /// bare-soil weight in [0, 1]. With smoothstep(e0, e1, x) and fbm2(x, y, octaves, salt):
 ///   flat = smoothstep(0.6, 0.9, n.z); fine_detail = 1 - smoothstep(0.01, 0.05, footprint)
+///   sprites = litter_fade(footprint) (render/floor_litter.hpp); blotches = fine_detail (1 - sprites)
 ///   needles = smoothstep(0.42, 0.58, fbm2(0.02 p, 2, stand)), or floor.needle_share where that is set
 ///   leaf = value_noise2(9 p, leaf); c = mix(leaf_litter, needle_litter, needles)
-///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) fine_detail)
+///   c = mix(c, dry_leaves, smoothstep(0.6, 0.8, leaf) (1 - needles) blotches)
 ///   c = mix(c, grass, 0.8 smoothstep(0.62, 0.78, fbm2(0.06 p, 2, grass)) flat)
 ///   c = mix(c, moss colour (kMossDetailNear), 0.85 smoothstep(0.6, 0.72, fbm2(0.15 p, 3, moss)) flat)
 ///   with floor.fallen_leaves f > 0 (autumn): fallen = f smoothstep(0.25, 0.55, fbm2(0.4 p, 2, fallen)) (1 - 0.7 needles),
@@ -87,10 +88,13 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 ///   soil = max(1 - flat, smoothstep(0.7, 0.84, fbm2(0.5 p, 3, soil))); c = mix(c, soil_colour, soil)
 ///   out = c (1 + (0.6 fbm2(4 p, 2, fine) - 0.3) (1 - smoothstep(0.1, 0.4, footprint)))
 ///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
+///   then litter_sprites over out with LitterMix{grass / 0.8, needles, fallen} and weight
+///   sprites (1 - 0.7 moss) (1 - soil): single leaves, needles, twigs and grass blades near the camera
 /// with shading_noise.hpp's noise evaluated lane by lane in its operation order (every target agrees).
 /// `slope` (may be null) receives the gradient (d/dx, d/dy, metres per metre) of the floor's relief
-///   height = (kGroundLeafRelief leaf + kGroundSpeckleRelief speckle) fine_detail
-/// (analytic derivatives of the same two value noises; fine_detail taken as constant).
+///   height = (kGroundLeafRelief leaf (1 - sprites) + kGroundSpeckleRelief speckle) fine_detail
+///            + moss cushions (kMossCushionRelief), then each sprite's tilt where it lies
+/// (analytic derivatives of the value noises; the fades taken as constant).
 void ground_albedo_row(const Vec3f* positions, const Vec3f* normals, const float* footprints, size_t count,
                        Vec3f* out, float* soil = nullptr, Vec2f* slope = nullptr, const FloorLook& floor = {});
 
