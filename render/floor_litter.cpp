@@ -62,10 +62,6 @@ Sprite sprite_of(uint32_t h1, uint32_t h2, const LitterMix& m) {
   return s;
 }
 
-/// How far beyond a sprite's half length and half width its shadow and a pixel's filter can reach it
-/// (metres): the shadow's width and a margin far above rounding, so skipping the sprites beyond is exact.
-constexpr float kLitterReach = kLitterShadowWidth + 1e-4f;
-
 /// Lays sprite `s` (cell hash h1), whose centre is (rx, ry) metres from the point, over `c` and `slope`.
 void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, float inv_f, float weight, Vec3f& c,
                 Vec2f& slope) {

@@ -24,6 +24,9 @@ inline constexpr float kLitterDensity = 0.95f;
 inline constexpr float kLitterTwigShare = 0.05f;
 /// Width (metres) of the contact shadow around each sprite, and how much it darkens the floor.
 inline constexpr float kLitterShadowWidth = 0.004f;
+/// How far beyond a sprite's half length and half width its shadow and a pixel's filter can reach it
+/// (metres): the shadow's width and a margin far above rounding, so skipping the sprites beyond is exact.
+inline constexpr float kLitterReach = kLitterShadowWidth + 1e-4f;
 inline constexpr float kLitterShadow = 0.25f;  ///< Darkening at the sprite's edge.
 /// How far a midrib darkens its leaf, and its half width (metres).
 inline constexpr float kLitterRib = 0.3f;

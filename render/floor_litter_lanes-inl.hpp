@@ -79,7 +79,7 @@ inline SpriteLanes sprite_lanes(VU h1, VU h2, const LitterMixLanes& m) {
 inline void lay_sprite_lanes(const SpriteLanes& s, VU h1, VF rx, VF ry, const VF* frame, VF weight, VF* c, VF& sx, VF& sy) {
   const DF d;
   const VF one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
-  const VF reach = hn::Set(d, kLitterShadowWidth + 1e-4f);  // floor_litter.cpp's kLitterReach
+  const VF reach = hn::Set(d, kLitterReach);
   const VF reach_u = hn::Add(hn::Add(s.half_length, reach), frame[0]), reach_v = hn::Add(hn::Add(s.middle, reach), frame[0]);
   const auto near = hn::And(hn::Gt(s.keep, hn::Zero(d)), hn::Lt(hn::Add(hn::Mul(rx, rx), hn::Mul(ry, ry)),
                                                                hn::Add(hn::Mul(reach_u, reach_u), hn::Mul(reach_v, reach_v))));

@@ -30,6 +30,7 @@ struct SurfacePoint {
   FloorLook floor{};           ///< What lies on the forest floor (Ground and Trail points).
   float leaf_shade = 1.0f;     ///< The brightness of the leaf under the point (leaf_brightness).
   TrailSurface trail = TrailSurface::PackedEarth;  ///< The trail's surface family (Material::Trail points).
+  float footprint = 0.0f;  ///< Metres one pixel covers there (Trail points' floor detail fades with it; 0: full detail).
 };
 
 /// Brightness of one leaf of a foliage mask against its tree's from the alpha of its texel:

@@ -179,7 +179,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const GBuffer& g = in.gbuffer;
   const size_t i = size_t(v) * size_t(g.width) + size_t(u);
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.floor,
-                       leaf_brightness(g.leaf[i]), in.trail_surface};
+                       leaf_brightness(g.leaf[i]), in.trail_surface, g.depth[i] * row.metres_per_depth};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f base;
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])
@@ -191,7 +191,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const MaterialResponse response = material_response(s.material);
   const Vec2f& slope = row.ground_slope[size_t(u)];
   Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
-                              : material_shading_normal(s, g.depth[i] * row.metres_per_depth);
+                              : material_shading_normal(s, s.footprint);
   if (puddle > 0.0f) n = (n + (Vec3f::UnitZ() - n) * puddle).normalized();  // still water lies level
   const float roughness = look.active() ? look.roughness(s, response.roughness, n, puddle) : response.roughness;
   return {albedo,       n,           s.normal,         view_dir,

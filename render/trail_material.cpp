@@ -197,8 +197,7 @@ Vec3f worn_floor(const Vec3f& p, const Vec3f& floor, float edge) {
 
 Vec3f trail_albedo(const SurfacePoint& s) {
   Vec3f floor;
-  const float footprint = 0.0f;  // full detail: the floor blended in near the edge
-  ground_albedo_row(&s.position, &s.normal, &footprint, 1, &floor, nullptr, nullptr, s.floor);
+  ground_albedo_row(&s.position, &s.normal, &s.footprint, 1, &floor, nullptr, nullptr, s.floor);
   const float edge = overlay_edge(s.uv.x(), s.position);
   const float w = overlay_weight(edge);
   const Vec3f outside = worn_floor(s.position, floor, edge);
