@@ -77,6 +77,16 @@ void box_blur(std::vector<float>& plane, int width, int height, int r, bool colu
 
 }  // namespace
 
+AABB canopy_region(const AABB& shaded) {
+  AABB region = shaded;
+  if (region.empty()) return region;
+  for (int a = 0; a < 2; ++a) {
+    region.min[a] -= float(kCanopyStandRadius);
+    region.max[a] += float(kCanopyStandRadius);
+  }
+  return region;
+}
+
 CanopyMap build_canopy_map(const ShadowMap& shadow, const GroundHeight& ground) {
   CanopyMap map;
   if (shadow.width <= 0 || shadow.height <= 0 || !(shadow.texel_size > 0.0)) return map;

@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "core/aabb.hpp"
 #include "core/types.hpp"
 #include "render/gbuffer.hpp"
 
@@ -44,6 +45,12 @@ struct CanopyMap {
   std::vector<float> cover;       ///< Blurred vertical canopy cover per cell, row-major.
   std::vector<float> depth;       ///< Blurred mean light-space depth of those texels (0 where cover is 0).
 };
+
+/// The region a canopy map must cover so that every point of `shaded` gets its whole blur windows: `shaded`
+/// grown by kCanopyStandRadius in x and y (past a map's edge counts as no canopy, so a map of `shaded`
+/// alone would light the points near its edges, the camera's own spot among them, as if the trees
+/// beyond were not there).
+AABB canopy_region(const AABB& shaded);
 
 /// The canopy of `shadow`: per cell, the texels whose surface lies kCanopyHeight or more above the
 /// ground (`ground` under the cell's farthest surface, refined once along the light), their share

@@ -10,6 +10,7 @@
 #include "components/sensor.hpp"
 #include "components/world_source.hpp"
 #include "core/stopwatch.hpp"
+#include "render/canopy_map.hpp"
 #include "render/shadow_plan.hpp"
 #include "systems/prepare_scene.hpp"
 #include "world/stereo_rig.hpp"
@@ -94,7 +95,7 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
   const render::ShadowPlan plan = render::plan_shadow(camera, ground_z, ctx.config.terrain.max_elevation, sun);
   renderer.render_shadow_map(scene, sun, plan.region, plan.resolution, options, work.shadow);
-  map_canopy(scene, ctx, plan.region, options, renderer, work);
+  map_canopy(scene, ctx, render::canopy_region(plan.region), options, renderer, work);
   work.shadow_s = clock.seconds();
 }
 

@@ -18,23 +18,34 @@ namespace {
 /// Canopy top height of the test scene's wood (m): everything at world x < 0 is covered at this height.
 constexpr double kTop = 10.0;
 
-/// A top-down depth map of flat ground at z = 0 with a closed canopy at z = kTop over x < 0, drawn as
-/// the renderer would (light looking down), 0.125 m texels over 80 x 80 m.
-ShadowMap wood_edge() {
-  AABB region;
-  region.extend(Vec3f(-40.0f, -40.0f, -5.0f));
-  region.extend(Vec3f(40.0f, 40.0f, 20.0f));
-  ShadowMap map = shadow_map_frame(Vec3d::UnitZ(), region, 640);
+/// A top-down depth map of `region` (flat ground at z = 0, a closed canopy at z = kTop wherever `wooded(x)`),
+/// drawn as the renderer would (light looking down) with `resolution` texels along the longer side.
+template <class Wooded>
+ShadowMap overhead(const AABB& region, int resolution, Wooded wooded) {
+  ShadowMap map = shadow_map_frame(Vec3d::UnitZ(), region, resolution);
   const Mat4d to_world = map.world_to_light.inverse();
   map.depth.assign(size_t(map.width) * size_t(map.height), std::numeric_limits<float>::infinity());
   for (int y = 0; y < map.height; ++y)
     for (int x = 0; x < map.width; ++x) {
       const Eigen::Vector4d p = to_world * Eigen::Vector4d(map.origin_x + (x + 0.5) * map.texel_size,
                                                            map.origin_y + (y + 0.5) * map.texel_size, 0.0, 1.0);
-      const Vec3d top(p.x(), p.y(), p.x() < 0.0 ? kTop : 0.0);
+      const Vec3d top(p.x(), p.y(), wooded(p.x()) ? kTop : 0.0);
       map.depth[size_t(y) * size_t(map.width) + size_t(x)] = float(map.world_to_light.block<1, 3>(2, 0).dot(top));
     }
   return map;
+}
+
+/// The box from (-h, -h, -5) to (h, h, 20).
+AABB square(float h) {
+  AABB region;
+  region.extend(Vec3f(-h, -h, -5.0f));
+  region.extend(Vec3f(h, h, 20.0f));
+  return region;
+}
+
+/// 80 x 80 m at 0.125 m texels with a closed canopy over x < 0.
+ShadowMap wood_edge() {
+  return overhead(square(40.0f), 640, [](double x) { return x < 0.0; });
 }
 
 /// canopy_share_row at one point.
@@ -118,6 +129,23 @@ TEST(CanopyMap, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesThePlainFormul
       EXPECT_EQ(share_at(map, points[i]), reference[i]) << i;  // one point at a time: the partial-vector path
     }
   }
+}
+
+TEST(CanopyMap, RegionGivesThePointsOfTheShadedBoxTheirWholeStand) {
+  // Inside a closed wood that runs on past the shaded 40 x 40 m box, a point at the box's corner sees no
+  // sky when the map covers canopy_region(box); a map of the box alone blurs "no canopy" in past its edges.
+  const AABB box = square(20.0f);
+  const AABB grown = canopy_region(box);
+  EXPECT_FLOAT_EQ(grown.min.x(), -20.0f - float(kCanopyStandRadius));
+  EXPECT_FLOAT_EQ(grown.max.y(), 20.0f + float(kCanopyStandRadius));
+  EXPECT_EQ(grown.min.z(), box.min.z());
+  EXPECT_EQ(grown.max.z(), box.max.z());
+  EXPECT_TRUE(canopy_region(AABB{}).empty());
+  const auto flat = [](double, double) { return 0.0; };
+  const auto wood = [](double) { return true; };
+  const Vec3f corner(19.5f, 19.5f, 0.0f);
+  EXPECT_NEAR(share_at(build_canopy_map(overhead(grown, 560, wood), flat), corner), 1.0f, 1e-6f);
+  EXPECT_LT(share_at(build_canopy_map(overhead(box, 320, wood), flat), corner), 0.9f);
 }
 
 TEST(CanopyMap, GroundHeightDecidesWhatIsCanopy) {
