@@ -16,6 +16,7 @@ void GBuffer::resize(int w, int h) {
   instance_id.assign(n, 0);
   variation.assign(n, 0);
   leaf.assign(n, 0);
+  mask_texels.assign(n, 0.0f);
 }
 
 }  // namespace silva::render

@@ -1,6 +1,7 @@
 #include "render/resolve.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -34,6 +35,7 @@ void write_miss(GBuffer& g, size_t i) {
   g.instance_id[i] = 0;
   g.variation[i] = 0;
   g.leaf[i] = 0;
+  g.mask_texels[i] = 0.0f;
 }
 
 /// World-space data of one (instance, triangle) pair, prepared once and reused by every pixel
@@ -51,6 +53,7 @@ struct HitTriangle {
   double e2_dot_q = 0;                            ///< e2 . qvec (t = e2_dot_q / det).
   Mat3d cof;                                      ///< Normal transform (cofactor of the linear part).
   Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
+  double mask_texels_per_metre = 0;               ///< Masked part: mask texels per metre of the triangle (isotropic).
 
   /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`, seen from `origin` (the
   /// instance's transforms are kept when the slot held the same instance before).
@@ -76,6 +79,16 @@ struct HitTriangle {
     qvec = s.cross(e1);
     e2_dot_q = e2.dot(qvec);
     part = &part_of(*mesh, triangle_index);
+    mask_texels_per_metre = part->mask && !mesh->uvs.empty() ? texel_density(*part->mask) : 0.0;
+  }
+
+  /// Mask texels per metre: the square root of the triangle's area in texels over its world area.
+  double texel_density(const AlphaMask& mask) const {
+    const Eigen::Vector2d t0 = mesh->uvs[idx[0]].cast<double>();
+    const Eigen::Vector2d a = (mesh->uvs[idx[1]].cast<double>() - t0).cwiseProduct(Eigen::Vector2d(mask.width, mask.height));
+    const Eigen::Vector2d b = (mesh->uvs[idx[2]].cast<double>() - t0).cwiseProduct(Eigen::Vector2d(mask.width, mask.height));
+    const double world = e1.cross(e2).norm();
+    return world > 0.0 ? std::sqrt(std::abs(a.x() * b.y() - a.y() * b.x()) / world) : 0.0;
   }
 };
 
@@ -159,6 +172,7 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.leaf[i] = mask ? mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height)) * size_t(mask->width) +
                                   size_t(AlphaMask::texel(uv.x(), mask->width))]
                    : 0;
+  g.mask_texels[i] = float(h.mask_texels_per_metre * t / cam.fx);  // the pixel is t / fx metres wide there
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "render/auto_exposure.hpp"
 #include "render/camera_encode.hpp"
 #include "render/camera_optics.hpp"
+#include "render/foliage_aa.hpp"
 #include "render/linear_frame.hpp"
 #include "render/materials.hpp"
 #include "render/post.hpp"
@@ -199,6 +200,18 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
           row.sun_visible[size_t(u)], row.fog_amount[size_t(u)], row.canopy[size_t(u)]};
 }
 
+/// Encodes every row of the whole linear `frame` into rgb_out (8-bit RGB) with the exposed camera model.
+void encode_frame(const ShadeInputs& in, const CameraModel& model, float exposure, uint64_t key, const LinearFrame& frame,
+                  std::vector<uint8_t>& rgb_out) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, frame.height), [&](const tbb::blocked_range<int>& rows) {
+    RowEncoder encoder(in.camera, model, exposure, in.seed, key, in.white_balance);
+    for (int v = rows.begin(); v < rows.end(); ++v) {
+      const size_t row = size_t(v) * size_t(frame.width);
+      encoder.encode(v, frame.rgb[row].data(), &rgb_out[row * 3]);
+    }
+  });
+}
+
 }  // namespace
 
 ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
@@ -226,7 +239,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera);
   const HalfResAo half_ao(g, in.camera);
   std::atomic<uint64_t> bare_soil{0};
-  const bool whole_frame = needs_whole_frame(in.model) || metered;
+  const bool soften = in.mask_coverage && has_minified_masks(g);  // the blend reads neighbouring rows: shade the whole frame first
+  const bool whole_frame = needs_whole_frame(in.model) || metered || soften;
   LinearFrame frame, scratch;
   if (whole_frame) frame.resize(g.width, g.height);
   tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
@@ -259,25 +273,24 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       terms.rough_out.resize(terms.rough.padded_size());
       light_rough_surfaces(lighting, terms.rough, terms.rough_out.data());
       for (size_t k = 0; k < terms.rough_at.size(); ++k) radiance[terms.rough_at[k]] = terms.rough_out[k];
-      if (overlay.active()) overlay.apply_row(v, radiance, g.width);
+      if (overlay.active() && !soften) overlay.apply_row(v, radiance, g.width);  // else after the blend
       if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     }
     bare_soil += terms.bare_soil;
   });
   if (whole_frame) {
+    if (soften) blend_minified_masks(g, exposure, frame, scratch);  // the preset's exposure when metered
+    if (soften && overlay.active())
+      tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
+        for (int v = rows.begin(); v < rows.end(); ++v) overlay.apply_row(v, &frame.rgb[size_t(v) * size_t(g.width)], g.width);
+      });
     if (metered) {
       ev100 = ev100_for_luminance(log_average_luminance(frame)) - in.exposure_compensation_ev;
       exposure = exposure_multiplier(ev100);
       exposed_model = exposed_camera_model(in.model, ev100);
     }
     if (needs_whole_frame(in.model)) apply_optics(frame, scratch, g.depth, in.camera, in.model);
-    tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-      RowEncoder encoder(in.camera, exposed_model, exposure, in.seed, key, in.white_balance);
-      for (int v = rows.begin(); v < rows.end(); ++v) {
-        const size_t row = size_t(v) * size_t(g.width);
-        encoder.encode(v, frame.rgb[row].data(), &rgb_out[row * 3]);
-      }
-    });
+    encode_frame(in, exposed_model, exposure, key, frame, rgb_out);
   }
   return {bare_soil.load(), ev100};
 }

@@ -34,6 +34,7 @@ struct ShadeInputs {
   std::optional<float> ev100 = std::nullopt;
   const CanopyMap* canopy = nullptr;  ///< The canopy over the view (sky light under trees), or none.
   TrailSurface trail_surface = TrailSurface::PackedEarth;  ///< How the trail looks (trail.surface).
+  bool mask_coverage = true;  ///< Blend pixels of minified alpha masks to their coverage (render/foliage_aa.hpp).
 };
 
 /// What shading saw, for the run's statistics.
@@ -46,7 +47,8 @@ struct ShadeCounts {
 /// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
 /// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
 /// across pixels of similar depth; under the canopy map's trees partly replaced by their green scattered light), through exponential height fog; sky pixels get the Preetham /
-/// overcast sky; falling rain or snow over the radiance (thinner under the canopy over the camera). Then the camera model: motion blur, depth
+/// overcast sky; with mask_coverage, pixels of minified leaf masks blended to their coverage (blend_minified_masks);
+/// falling rain or snow over the radiance (thinner under the canopy over the camera). Then the camera model: motion blur, depth
 /// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
 /// exposure (the preset's, or metered from the whole linear frame with auto_exposure; minus the
 /// compensation) with the white balance and vignetting, shot + read sensor noise, ACES tone mapping, sRGB.

@@ -196,7 +196,7 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
                                lighting.white_balance, floor_look(ctx),
                                ev100,            &sun.canopy,
-                               ctx.trail_surface};
+                               ctx.trail_surface, ctx.config.camera.antialias};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;

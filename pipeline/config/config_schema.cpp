@@ -129,7 +129,7 @@ std::vector<ConfigKey> build_schema() {
        above(0, 1000), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_height; }},
       {"camera.aerial_pitch_deg", T::Float, "aerial camera pitch, degrees (ground pitch is 0)",
        between(-90, 90), {}, [](Config& c) -> FieldRef { return &c.camera.aerial_pitch_deg; }},
-      {"camera.antialias", T::Bool, "edge antialiasing of RGB; labels and depth stay exact per pixel", {}, {},
+      {"camera.antialias", T::Bool, "edge antialiasing of RGB and leaf masks finer than a pixel blended to their coverage; labels and depth stay exact per pixel", {}, {},
        [](Config& c) -> FieldRef { return &c.camera.antialias; }},
       {"camera.noise", T::Bool, "shot + read sensor noise on the linear RGB signal", {}, {},
        [](Config& c) -> FieldRef { return &c.camera.noise; }},

@@ -108,6 +108,26 @@ TEST(RasterLabels, TinyMasksAreReadInsideTheirTexels) {
   }
 }
 
+TEST(RasterLabels, MaskTexelsMeasureHowMinifiedEachPixelsMaskIs) {
+  // A 256 x 256 mask repeated twice over the 3 m card: 512 / 3 texels per metre; at z = 2 a pixel of the
+  // 128-wide 90-degree camera (fx = 64) is 2 / 64 m wide, so 16/3 texels across. The ground has no mask.
+  const Camera cam = screen_camera(128, 96);
+  Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::TreeCanopy,
+                              false, make_mask(256, 256, std::vector<uint8_t>(256 * 256, 255)));
+  card.uvs = {Vec2f(0, 0), Vec2f(0, 2), Vec2f(2, 2), Vec2f(2, 0)};
+  const GBuffer g = render_card_over_ground(cam, std::move(card));
+  int card_pixels = 0;
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (g.role[i] == Role::TreeCanopy) {
+      EXPECT_NEAR(g.mask_texels[i], 16.0f / 3.0f, 1e-4f) << i;
+      ++card_pixels;
+    } else {
+      EXPECT_EQ(g.mask_texels[i], 0.0f) << i;
+    }
+  }
+  EXPECT_GT(card_pixels, 5000);
+}
+
 TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {
   const Camera cam = screen_camera(128, 96);
   auto colour = std::make_shared<BaseColor>();

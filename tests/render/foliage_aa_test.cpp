@@ -1,0 +1,117 @@
+// Coverage blend of minified alpha masks: known answers on a checkerboard of leaf and background, what it
+// leaves alone (magnified masks, solid surfaces in front), and independence of the thread count.
+#include "render/foliage_aa.hpp"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <random>
+
+namespace silva::render {
+namespace {
+
+const Vec3f kLeaf(1, 0, 0);        ///< Radiance of the leaf pixels.
+const Vec3f kBackground(0, 0, 1);  ///< Radiance of the pixels behind.
+
+/// A size x size view: leaf pixels (depth 10, `texels` mask texels across) where (u + v) is even, background
+/// at depth 30 elsewhere; `frame` gets their radiance.
+GBuffer checkerboard(int size, float texels, LinearFrame& frame) {
+  GBuffer g;
+  g.resize(size, size);
+  frame.resize(size, size);
+  for (int v = 0; v < size; ++v)
+    for (int u = 0; u < size; ++u) {
+      const size_t i = size_t(v) * size_t(size) + size_t(u);
+      const bool leaf = (u + v) % 2 == 0;
+      g.depth[i] = leaf ? 10.0f : 30.0f;
+      g.mask_texels[i] = leaf ? texels : 0.0f;
+      frame.rgb[i] = leaf ? kLeaf : kBackground;
+    }
+  return g;
+}
+
+TEST(FoliageAa, WeightRampsFromOneToThreeTexelsAcross) {
+  EXPECT_EQ(minified_weight(0.0f), 0.0f);
+  EXPECT_EQ(minified_weight(1.0f), 0.0f);
+  EXPECT_FLOAT_EQ(minified_weight(2.0f), 0.5f);
+  EXPECT_EQ(minified_weight(3.0f), 1.0f);
+  EXPECT_EQ(minified_weight(40.0f), 1.0f);
+}
+
+TEST(FoliageAa, ACheckerboardOfLeafAndBackgroundBlendsToKnownMixes) {
+  LinearFrame frame, scratch;
+  const GBuffer g = checkerboard(5, 8.0f, frame);
+  ASSERT_TRUE(has_minified_masks(g));
+  blend_minified_masks(g, 0.0f, frame, scratch);
+  // A leaf pixel: itself (4), its four sides behind it (2 each) and four leaf corners (1 each): 8/16 leaf.
+  const Vec3f leaf_mix = frame.rgb[2 * 5 + 2];
+  EXPECT_FLOAT_EQ(leaf_mix.x(), 0.5f);
+  EXPECT_FLOAT_EQ(leaf_mix.z(), 0.5f);
+  // A background pixel: itself (4) and the four leaf pixels in front of it at its sides (2 each); its
+  // background corners lie on its own layer but carry no mask: 8/12 leaf.
+  const Vec3f background_mix = frame.rgb[2 * 5 + 1];
+  EXPECT_FLOAT_EQ(background_mix.x(), 2.0f / 3.0f);
+  EXPECT_FLOAT_EQ(background_mix.z(), 1.0f / 3.0f);
+  // A corner leaf pixel has three neighbours: one leaf corner (1) and two background sides (2 each).
+  EXPECT_FLOAT_EQ(frame.rgb[0].x(), 5.0f / 9.0f);
+}
+
+TEST(FoliageAa, BrightPixelsWeighByTheirTone) {
+  // At exposure 1 the background's luminance is 0.0722 x 9 = 0.65: weight 1 / 1.65 against the leaves'
+  // 1 / (1 + 0.2126 x 0) = 1. A leaf pixel then holds leaf 8 / (8 + 8 / 1.65) of the mix.
+  LinearFrame frame, scratch;
+  GBuffer g = checkerboard(5, 8.0f, frame);
+  for (Vec3f& c : frame.rgb) c = c.z() > 0.0f ? Vec3f(0, 0, 9) : Vec3f(1, 0, 0);
+  for (Vec3f& c : frame.rgb) c.x() = c.x() > 0.0f ? 1e-30f : 0.0f;  // leaves with no light: tone weight 1
+  blend_minified_masks(g, 1.0f, frame, scratch);
+  const float sky = 1.0f / (1.0f + 0.0722f * 9.0f);
+  EXPECT_NEAR(frame.rgb[2 * 5 + 2].z(), 9.0f * 8.0f * sky / (8.0f + 8.0f * sky), 1e-5f);
+}
+
+TEST(FoliageAa, MagnifiedMasksAndFramesWithoutMasksAreLeftAlone) {
+  LinearFrame frame, scratch;
+  const GBuffer g = checkerboard(5, 0.8f, frame);
+  EXPECT_FALSE(has_minified_masks(g));
+  const std::vector<Vec3f> before = frame.rgb;
+  blend_minified_masks(g, 0.0f, frame, scratch);
+  EXPECT_EQ(frame.rgb, before);
+}
+
+TEST(FoliageAa, ASolidSurfaceInFrontKeepsItsEdgeAndItsColour) {
+  // Column 0 is a solid trunk at depth 5 in front of the minified leaves: the trunk takes none of the
+  // leaves behind it and the leaves take none of the trunk.
+  LinearFrame frame, scratch;
+  GBuffer g = checkerboard(5, 8.0f, frame);
+  for (int v = 0; v < 5; ++v) {
+    const size_t i = size_t(v) * 5;
+    g.depth[i] = 5.0f;
+    g.mask_texels[i] = 0.0f;
+    frame.rgb[i] = Vec3f(0, 1, 0);
+  }
+  blend_minified_masks(g, 0.0f, frame, scratch);
+  for (int v = 0; v < 5; ++v) {
+    EXPECT_EQ(frame.rgb[size_t(v) * 5], Vec3f(0, 1, 0)) << v;
+    EXPECT_EQ(frame.rgb[size_t(v) * 5 + 1].y(), 0.0f) << v;
+  }
+}
+
+TEST(FoliageAa, SameForAnyThreadCount) {
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  LinearFrame a;
+  GBuffer g;
+  g.resize(97, 61);
+  a.resize(97, 61);
+  for (size_t i = 0; i < g.size(); ++i) {
+    g.depth[i] = unit(gen) < 0.1f ? 0.0f : 1.0f + 50.0f * unit(gen);
+    g.mask_texels[i] = 4.0f * unit(gen);
+    a.rgb[i] = Vec3f(unit(gen), unit(gen), unit(gen));
+  }
+  LinearFrame b = a, scratch;
+  tbb::task_arena(1).execute([&] { blend_minified_masks(g, 1.0f, a, scratch); });
+  tbb::task_arena(2).execute([&] { blend_minified_masks(g, 1.0f, b, scratch); });
+  EXPECT_EQ(a.rgb, b.rgb);
+}
+
+}  // namespace
+}  // namespace silva::render
