@@ -24,9 +24,9 @@ bool has_minified_masks(const GBuffer& g);
 
 /// Replaces `frame` (radiance of g's pixels) by its coverage blend: pixel p becomes the mean of its 3x3
 /// neighbours q under the tent weights 4 / 2 / 1 (centre / side / corner), q != p taking part with its tent
-/// weight times max(w(p) if q lies on p's layer or behind it, w(q) if q lies on p's layer or in front of
-/// it), w = minified_weight, where "behind" and "in front" compare depths (no hit = infinitely far) with
-/// kLayerTolerance. Every pixel's weight is also divided by 1 + its luminance x `exposure` (the exposed
+/// weight times max(w(p) if q is a surface on p's layer or behind it, w(q) if q lies on p's layer or in
+/// front of it), w = minified_weight, where "behind" and "in front" compare depths (no hit = infinitely far)
+/// with kLayerTolerance: the sky through a gap never brightens the leaves, but the gap takes their colour. Every pixel's weight is also divided by 1 + its luminance x `exposure` (the exposed
 /// luminance, 1 about white), so the blend acts as if on the image's tones: a sky gap of one pixel softens
 /// the leaves around it instead of lighting them up (one sample per pixel holds too few gaps for a linear
 /// mean). `scratch` is overwritten. Rows run in parallel; the result never depends on threads.

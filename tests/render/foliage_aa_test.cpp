@@ -56,6 +56,16 @@ TEST(FoliageAa, ACheckerboardOfLeafAndBackgroundBlendsToKnownMixes) {
   EXPECT_FLOAT_EQ(frame.rgb[0].x(), 5.0f / 9.0f);
 }
 
+TEST(FoliageAa, SkyGapsTakeTheLeavesColourButGiveTheLeavesNone) {
+  LinearFrame frame, scratch;
+  GBuffer g = checkerboard(5, 8.0f, frame);
+  for (size_t i = 0; i < g.size(); ++i)
+    if (g.mask_texels[i] == 0.0f) g.depth[i] = 0.0f;  // the background is sky
+  blend_minified_masks(g, 0.0f, frame, scratch);
+  EXPECT_EQ(frame.rgb[2 * 5 + 2], kLeaf);                        // itself and its four leaf corners
+  EXPECT_FLOAT_EQ(frame.rgb[2 * 5 + 1].x(), 2.0f / 3.0f);        // a gap: itself (4), four leaves (2 each)
+}
+
 TEST(FoliageAa, BrightPixelsWeighByTheirTone) {
   // At exposure 1 the background's luminance is 0.0722 x 9 = 0.65: weight 1 / 1.65 against the leaves'
   // 1 / (1 + 0.2126 x 0) = 1. A leaf pixel then holds leaf 8 / (8 + 8 / 1.65) of the mix.
