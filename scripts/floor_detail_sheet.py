@@ -6,13 +6,11 @@ green bottom corner, RGB. With --before, each row shows that build's crop of the
 Usage: scripts/floor_detail_sheet.py [--silva build/silva] [--before OLD_SILVA] [--seed 7]
                                      [--scratch /tmp/silva-floor] [--out docs/realism-floor.jpg]
 """
-import argparse
-import pathlib
 import subprocess
 
 import cv2
 
-from labelled_rows import labelled_row, write_sheet
+from labelled_rows import labelled_row, sheet_args, write_sheet
 
 STANDS = [  # label, settings
     ("mixed", []),
@@ -55,24 +53,23 @@ def floor_crop(view, x):
     return view[h - TILE_H:h, x:x + TILE_W]
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--silva", default="build/silva")
-    parser.add_argument("--before", help="an older silva whose crops go first in each row")
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--scratch", default="/tmp/silva-floor")
-    parser.add_argument("--out", default="docs/realism-floor.jpg")
-    args = parser.parse_args()
-    scratch = pathlib.Path(args.scratch)
+def stand_rows(args, stands, pick):
+    """One labelled row per (label, settings) of `stands`: the whole view at a quarter, then the --before build's
+    crop (when given) and this build's, where pick(view) returns the crop function for this build's view."""
     rows = []
-    for k, (label, settings) in enumerate(STANDS):
-        view = render(args.silva, scratch / f"new{k}", args.seed, settings)
-        x = floor_window(view)
-        tiles = [cv2.resize(view, (TILE_W, TILE_H), interpolation=cv2.INTER_AREA), floor_crop(view, x)]
+    for k, (label, settings) in enumerate(stands):
+        view = render(args.silva, args.scratch / f"new{k}", args.seed, settings)
+        crop = pick(view)
+        tiles = [cv2.resize(view, (TILE_W, TILE_H), interpolation=cv2.INTER_AREA), crop(view)]
         if args.before:
-            tiles.insert(1, floor_crop(render(args.before, scratch / f"old{k}", args.seed, settings), x))
+            tiles.insert(1, crop(render(args.before, args.scratch / f"old{k}", args.seed, settings)))
         rows.append(labelled_row(label, tiles, LABEL_W))
-    write_sheet(rows, args.out)
+    return rows
+
+
+def main():
+    args = sheet_args(__doc__, "/tmp/silva-floor", "docs/realism-floor.jpg", before=True)
+    write_sheet(stand_rows(args, STANDS, lambda view: (lambda image, x=floor_window(view): floor_crop(image, x))), args.out)
 
 
 if __name__ == "__main__":

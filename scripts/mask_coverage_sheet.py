@@ -6,23 +6,18 @@ pixel-to-pixel contrast), RGB. With --before, each row shows that build's crop o
 Usage: scripts/mask_coverage_sheet.py [--silva build/silva] [--before OLD_SILVA] [--seed 7]
                                       [--scratch /tmp/silva-masks] [--out docs/realism-mask-coverage.jpg]
 """
-import argparse
-import pathlib
 
 import cv2
 import numpy as np
 
-from floor_detail_sheet import TILE_H, TILE_W, render
-from labelled_rows import labelled_row, write_sheet
+from floor_detail_sheet import TILE_H, TILE_W, stand_rows
+from labelled_rows import sheet_args, write_sheet
 
 STANDS = [  # label, settings
     ("mixed", []),
     ("spruce", ["vegetation.forest_type=spruce_plantation"]),
     ("winter", ["vegetation.season=winter"]),
 ]
-LABEL_W = 100
-
-
 def busiest_tile(view):
     """(x, y) of the full-resolution tile in the upper half of `view` whose neighbouring pixels differ most."""
     grey = cv2.cvtColor(view, cv2.COLOR_BGR2GRAY).astype(np.float32)
@@ -32,25 +27,14 @@ def busiest_tile(view):
     return max(corners, key=lambda c: float(contrast[c[1]:c[1] + TILE_H, c[0]:c[0] + TILE_W].mean()))
 
 
+def crop_at(x, y):
+    """The crop function of the full-resolution tile at (x, y)."""
+    return lambda image: image[y:y + TILE_H, x:x + TILE_W]
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--silva", default="build/silva")
-    parser.add_argument("--before", help="an older silva whose crops go first in each row")
-    parser.add_argument("--seed", type=int, default=7)
-    parser.add_argument("--scratch", default="/tmp/silva-masks")
-    parser.add_argument("--out", default="docs/realism-mask-coverage.jpg")
-    args = parser.parse_args()
-    scratch = pathlib.Path(args.scratch)
-    rows = []
-    for k, (label, settings) in enumerate(STANDS):
-        view = render(args.silva, scratch / f"new{k}", args.seed, settings)
-        old = render(args.before, scratch / f"old{k}", args.seed, settings) if args.before else None
-        x, y = busiest_tile(old if old is not None else view)
-        tiles = [cv2.resize(view, (TILE_W, TILE_H), interpolation=cv2.INTER_AREA), view[y:y + TILE_H, x:x + TILE_W]]
-        if old is not None:
-            tiles.insert(1, old[y:y + TILE_H, x:x + TILE_W])
-        rows.append(labelled_row(label, tiles, LABEL_W))
-    write_sheet(rows, args.out)
+    args = sheet_args(__doc__, "/tmp/silva-masks", "docs/realism-mask-coverage.jpg", before=True)
+    write_sheet(stand_rows(args, STANDS, lambda view: crop_at(*busiest_tile(view))), args.out)
 
 
 if __name__ == "__main__":
