@@ -26,10 +26,10 @@ bool has_minified_masks(const GBuffer& g);
 /// neighbours q under the tent weights 4 / 2 / 1 (centre / side / corner), q != p taking part with its tent
 /// weight times max(w(p) if q is a surface on p's layer or behind it, w(q) if q lies on p's layer or in
 /// front of it), w = minified_weight, where "behind" and "in front" compare depths (no hit = infinitely far)
-/// with kLayerTolerance: the sky through a gap never brightens the leaves, but the gap takes their colour. Every pixel's weight is also divided by 1 + its luminance x `exposure` (the exposed
-/// luminance, 1 about white), so the blend acts as if on the image's tones: a sky gap of one pixel softens
-/// the leaves around it instead of lighting them up (one sample per pixel holds too few gaps for a linear
-/// mean). `scratch` is overwritten. Rows run in parallel; the result never depends on threads.
+/// with kLayerTolerance: the sky through a gap never brightens the leaves, but the gap takes their colour.
+/// Every pixel's weight is also divided by 1 + its luminance x `exposure` (the exposed luminance, 1 about
+/// white), so the blend acts as if on the image's tones: a bright pixel softens the leaves around it instead
+/// of lighting them up (one sample per pixel holds too few gaps for a linear mean). `scratch` is overwritten. Rows run in parallel; the result never depends on threads.
 void blend_minified_masks(const GBuffer& g, float exposure, LinearFrame& frame, LinearFrame& scratch);
 
 }  // namespace silva::render

@@ -84,9 +84,9 @@ struct HitTriangle {
 
   /// Mask texels per metre: the square root of the triangle's area in texels over its world area.
   double texel_density(const AlphaMask& mask) const {
-    const Eigen::Vector2d t0 = mesh->uvs[idx[0]].cast<double>();
-    const Eigen::Vector2d a = (mesh->uvs[idx[1]].cast<double>() - t0).cwiseProduct(Eigen::Vector2d(mask.width, mask.height));
-    const Eigen::Vector2d b = (mesh->uvs[idx[2]].cast<double>() - t0).cwiseProduct(Eigen::Vector2d(mask.width, mask.height));
+    const Eigen::Vector2d texels(mask.width, mask.height), t0 = mesh->uvs[idx[0]].cast<double>();
+    const Eigen::Vector2d a = (mesh->uvs[idx[1]].cast<double>() - t0).cwiseProduct(texels);
+    const Eigen::Vector2d b = (mesh->uvs[idx[2]].cast<double>() - t0).cwiseProduct(texels);
     const double world = e1.cross(e2).norm();
     return world > 0.0 ? std::sqrt(std::abs(a.x() * b.y() - a.y() * b.x()) / world) : 0.0;
   }

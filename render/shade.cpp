@@ -273,14 +273,14 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
       terms.rough_out.resize(terms.rough.padded_size());
       light_rough_surfaces(lighting, terms.rough, terms.rough_out.data());
       for (size_t k = 0; k < terms.rough_at.size(); ++k) radiance[terms.rough_at[k]] = terms.rough_out[k];
-      if (overlay.active() && !soften) overlay.apply_row(v, radiance, g.width);  // else after the blend
+      if (overlay.active() && !whole_frame) overlay.apply_row(v, radiance, g.width);  // else after the blend
       if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     }
     bare_soil += terms.bare_soil;
   });
   if (whole_frame) {
     if (soften) blend_minified_masks(g, exposure, frame, scratch);  // the preset's exposure when metered
-    if (soften && overlay.active())
+    if (overlay.active())
       tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
         for (int v = rows.begin(); v < rows.end(); ++v) overlay.apply_row(v, &frame.rgb[size_t(v) * size_t(g.width)], g.width);
       });
