@@ -14,12 +14,44 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// Columns per block of the cast order: one ray-caster packet of a ring.
 constexpr size_t kPacketColumns = 16;
+
+/// Elevation of beam `ring` (radians).
+double elevation_rad(const LidarPreset& preset, int ring) { return preset.elevations_deg[size_t(ring)] * kPi / 180.0; }
+
+/// Azimuth of column `column` (radians): 180 degrees at column 0, turning clockwise.
+double azimuth_rad(const LidarPreset& preset, int column) {
+  return kPi - 2.0 * kPi * double(column) / double(preset.columns);
+}
+
+/// The unit direction of elevation and azimuth given by their cosines and sines.
+Vec3d direction_of(double cos_elevation, double sin_elevation, double cos_azimuth, double sin_azimuth) {
+  return {cos_elevation * cos_azimuth, cos_elevation * sin_azimuth, sin_elevation};
+}
+
+/// The cosines and sines of a preset's elevations and azimuths, so a sweep calls no trigonometry per ray.
+struct BeamAngles {
+  std::vector<double> cos_elevation, sin_elevation, cos_azimuth, sin_azimuth;  ///< By ring, by column.
+  explicit BeamAngles(const LidarPreset& preset) {
+    for (int r = 0; r < int(preset.elevations_deg.size()); ++r) {
+      cos_elevation.push_back(std::cos(elevation_rad(preset, r)));
+      sin_elevation.push_back(std::sin(elevation_rad(preset, r)));
+    }
+    for (int c = 0; c < preset.columns; ++c) {
+      cos_azimuth.push_back(std::cos(azimuth_rad(preset, c)));
+      sin_azimuth.push_back(std::sin(azimuth_rad(preset, c)));
+    }
+  }
+  /// beam_direction(preset, ring, column), bit for bit.
+  Vec3d direction(size_t ring, size_t column) const {
+    return direction_of(cos_elevation[ring], sin_elevation[ring], cos_azimuth[column], sin_azimuth[column]);
+  }
+};
+
 }  // namespace
 
 Vec3d beam_direction(const LidarPreset& preset, int ring, int column) {
-  const double elevation = preset.elevations_deg[size_t(ring)] * kPi / 180.0;
-  const double azimuth = kPi - 2.0 * kPi * double(column) / double(preset.columns);
-  return {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
+  const double elevation = elevation_rad(preset, ring), azimuth = azimuth_rad(preset, column);
+  return direction_of(std::cos(elevation), std::sin(elevation), std::cos(azimuth), std::sin(azimuth));
 }
 
 float nir_reflectivity(Material m) {
@@ -66,6 +98,7 @@ std::vector<LidarPoint> cast_sweep(const RayScene& scene, const LidarPreset& pre
     const size_t within = k - block * kPacketColumns * rings;
     return (first_column + within % width) * rings + within / width;
   };
+  const BeamAngles beams(preset);
   std::vector<Mat3d> world_to_column(columns);
   for (size_t c = 0; c < columns; ++c) world_to_column[c] = column_to_world[c].transpose();
   LidarPoint none;
@@ -75,7 +108,7 @@ std::vector<LidarPoint> cast_sweep(const RayScene& scene, const LidarPreset& pre
     const size_t i = firing(k), c = i / rings;
     Ray ray;
     ray.origin = column_origin[c];
-    ray.direction = column_to_world[c] * beam_direction(preset, int(i % rings), int(c));
+    ray.direction = column_to_world[c] * beams.direction(i % rings, c);
     ray.t_near = preset.min_range;
     ray.t_far = preset.max_range;
     return ray;

@@ -11,6 +11,7 @@
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
 
+#include "core/alpha_bits.hpp"
 #include "core/surface_overlay.hpp"
 
 namespace silva::raycast {
@@ -27,6 +28,7 @@ struct PartInfo {
   uint32_t first_triangle = 0;     ///< The part's first triangle in the mesh.
   bool cutoff = false;             ///< Instances of the mesh may carry a cut-off (the filter checks it).
   std::vector<std::array<Vec2f, 3>> corner_uvs;  ///< Masked part: its triangles' corner uvs, side by side for the filter.
+  std::shared_ptr<const AlphaBits> mask_bits;  ///< Masked part: its mask's opacity bits (what the filter samples).
 };
 
 /// The BVH of one mesh and what its parts' filters read.
@@ -56,12 +58,12 @@ struct CastContext {
 };
 
 /// True when the part's alpha mask is opaque at barycentrics (b1, b2) of its triangle t (nearest
-/// texel, repeat wrap, as the rasteriser samples it).
+/// texel, repeat wrap, as the rasteriser samples it; read from the mask's bits).
 bool mask_opaque(const PartInfo& p, uint32_t t, double b1, double b2) {
   const std::array<Vec2f, 3>& uv = p.corner_uvs[t];
   const double u = double(uv[0].x()) + b1 * double(uv[1].x() - uv[0].x()) + b2 * double(uv[2].x() - uv[0].x());
   const double v = double(uv[0].y()) + b1 * double(uv[1].y() - uv[0].y()) + b2 * double(uv[2].y() - uv[0].y());
-  return p.part->mask->opaque(float(u), float(v));
+  return p.mask_bits->opaque(float(u), float(v));
 }
 
 /// Intersection filter: rejects hits on transparent texels of a masked part and hits on instances
@@ -93,6 +95,17 @@ struct RayScene::Impl {
   std::unordered_map<const Mesh*, MeshEntry> meshes;
   std::vector<Placed> placed;                         // by top-level geomID
   std::map<uint64_t, std::vector<unsigned>> groups;   // key -> top-level geomIDs
+  /// Opacity bits by mask, shared by every part that uses the mask; each entry keeps its mask alive,
+  /// so a cached address is never reused by another mask.
+  std::unordered_map<const AlphaMask*, std::pair<std::shared_ptr<const AlphaMask>, std::shared_ptr<const AlphaBits>>>
+      mask_bits;
+
+  /// The opacity bits of `mask`, built on first use.
+  std::shared_ptr<const AlphaBits> bits_of(const std::shared_ptr<const AlphaMask>& mask) {
+    auto& entry = mask_bits[mask.get()];
+    if (!entry.second) entry = {mask, std::make_shared<const AlphaBits>(AlphaBits::of(*mask))};
+    return entry.second;
+  }
 
   /// Throws with `what` when Embree reports an error.
   void check(const char* what) const {
@@ -119,8 +132,9 @@ struct RayScene::Impl {
           rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), tris));
       if (!ix) check("index buffer");
       std::copy_n(mesh.indices.begin() + part.first_index, part.index_count, ix);
-      e.parts.push_back(std::make_unique<PartInfo>(PartInfo{&mesh, &part, part.first_index / 3, cutoff, {}}));
+      e.parts.push_back(std::make_unique<PartInfo>(PartInfo{&mesh, &part, part.first_index / 3, cutoff, {}, {}}));
       if (part.mask) {
+        e.parts.back()->mask_bits = bits_of(part.mask);
         e.parts.back()->corner_uvs.resize(tris);
         for (size_t t = 0; t < tris; ++t)
           for (size_t c = 0; c < 3; ++c) e.parts.back()->corner_uvs[t][c] = mesh.uvs[ix[3 * t + c]];
@@ -161,6 +175,7 @@ struct RayScene::Impl {
     if (it == meshes.end() || --it->second.users > 0) return;
     rtcReleaseScene(it->second.scene);
     meshes.erase(it);
+    std::erase_if(mask_bits, [](const auto& kv) { return kv.second.second.use_count() == 1; });  // no part uses it
   }
 
   /// Fills `h` from an Embree hit of ray `ray`.
