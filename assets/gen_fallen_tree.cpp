@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "assets/dead_wood.hpp"
 #include "assets/generators.hpp"
+#include "assets/root_plate.hpp"
 #include "assets/tree_mesh.hpp"
 
 namespace silva::assets {
@@ -35,28 +35,6 @@ Skeleton lay_down(const Skeleton& s, float x0) {
   return out;
 }
 
-/// The torn-up root plate at x = x0: a soil disc of radius R with roots sticking out of its face.
-void add_root_plate(MeshBuilder& b, Rng& rng, float x0, float R, float r0) {
-  constexpr float kPi = std::numbers::pi_v<float>;
-  const Vec3f c(x0, 0, 0.7f * R);
-  const float depth = rng.range(0.25f, 0.4f);
-  b.begin_part(Role::Obstacle, Material::Ground);
-  const TubeNode rim[] = {{c - Vec3f(depth, 0, 0), 0.9f * R}, {c, R}};
-  add_tube(b, rim, 12);
-  add_disc(b, c - Vec3f(depth, 0, 0), -Vec3f::UnitX(), 0.9f * R, 12);
-  add_disc(b, c + Vec3f(0.01f, 0, 0), Vec3f::UnitX(), R, 12);
-  b.begin_part(Role::Obstacle, Material::BarkDead);
-  const int roots = 6 + int(rng.below(4));
-  for (int k = 0; k < roots; ++k) {
-    const float a = 2.0f * kPi * (float(k) + rng.range(-0.3f, 0.3f)) / float(roots);
-    const Vec3f out(0, std::cos(a), std::sin(a));
-    const Vec3f base = c + Vec3f(0.02f, 0, 0) + 0.3f * R * out;
-    const TubeNode root[] = {{base, 0.35f * r0}, {base + Vec3f(0.15f, 0, 0) + 0.5f * R * out, 0.2f * r0},
-                             {base + Vec3f(rng.range(0.0f, 0.3f), 0, 0) + rng.range(0.8f, 1.0f) * R * out, kMinTubeRadius}};
-    if (root[0].r > kMinTubeRadius) add_tube(b, root, 5);
-  }
-}
-
 }  // namespace
 
 GeneratedAsset generate_fallen_tree(Rng& rng) {
@@ -65,12 +43,12 @@ GeneratedAsset generate_fallen_tree(Rng& rng) {
   const float top = rng.range(0.45f, 0.85f);  // broken where the trunk hit the ground
   const Skeleton s = lay_down(dead_skeleton(length, r0, top, rng), -0.5f * length * top);
   MeshBuilder b;
-  TreeLook look{Material::BarkDead, Role::Obstacle, false, {}};
+  TreeLook look{Material::LogBark, Role::Obstacle, false, {}};  // fallen wood: furrowed, mossy on top
   mesh_tree(b, s, look, rng);
   const auto& trunk = s.branches.front().nodes;
   b.begin_part(Role::Obstacle, Material::Wood);  // the broken end
   add_disc(b, trunk.back().p, (trunk.back().p - trunk[trunk.size() - 2].p).normalized(), trunk.back().r, 8);
-  add_root_plate(b, rng, -0.5f * length * top, rng.range(3.0f, 4.5f) * r0, r0);
+  add_root_plate(b, rng, {-0.5f * length * top, rng.range(4.0f, 6.0f) * r0, r0});
   CollisionProxy proxy;
   proxy.shape = CollisionProxy::Shape::Capsule;
   proxy.center = Vec3f(0, 0, 0.85f * r0);

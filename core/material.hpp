@@ -40,6 +40,7 @@ enum class Material : uint8_t {
   AutumnGrass,    ///< Grass in autumn: straw and yellow-brown with a little green left.
   WinterGrass,    ///< Grass in winter: dry and pale.
   DeadBracken,    ///< Fern fronds in winter: dull grey-brown standing dead bracken.
+  Soil,           ///< Bare forest soil: dark humus, paler mineral patches, small stones (root plates, clods).
   Count,
 };
 

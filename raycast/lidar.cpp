@@ -68,7 +68,7 @@ float nir_reflectivity(Material m) {
       return 0.45f;
     case Material::Rock:
       return 0.35f;
-    case Material::Ground: case Material::Trail:
+    case Material::Ground: case Material::Trail: case Material::Soil:
       return 0.25f;
     default:
       return 0.3f;  // bark, dead wood, bare twigs

@@ -74,4 +74,14 @@ Vec3f leaf_litter_albedo(const SurfacePoint& s) {
   return lerp(c, Vec3f(0.07f, 0.05f, 0.03f), 0.6f * step(0.6f, 0.85f, decay));
 }
 
+Vec3f soil_albedo(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float mineral = fbm3(p.x() * 4.0f, p.y() * 4.0f, p.z() * 4.0f, 3, kSoilTone);
+  const float crumb = value_noise3(p.x() * 45.0f, p.y() * 45.0f, p.z() * 45.0f, kSoilTone + 1);
+  const float stone = step(0.86f, 0.9f, value_noise3(p.x() * 14.0f, p.y() * 14.0f, p.z() * 14.0f, kSoilTone + 2));
+  const Vec3f c = lerp(Vec3f(0.045f, 0.032f, 0.022f), Vec3f(0.15f, 0.11f, 0.07f), step(0.5f, 0.75f, mineral)) *
+                  (0.75f + 0.5f * crumb);
+  return lerp(c, Vec3f(0.1f, 0.095f, 0.088f) * (0.8f + 0.4f * crumb), stone);
+}
+
 }  // namespace silva::render

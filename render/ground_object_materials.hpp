@@ -21,4 +21,8 @@ Vec3f moss_albedo(const SurfacePoint& s);
 /// Fallen leaves: browns, ochres and dark decayed patches.
 Vec3f leaf_litter_albedo(const SurfacePoint& s);
 
+/// Bare soil: dark humus with paler mineral patches, crumbs and a few small stones (3D noise, so
+/// the torn faces of root plates show no streaks).
+Vec3f soil_albedo(const SurfacePoint& s);
+
 }  // namespace silva::render

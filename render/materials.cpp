@@ -112,6 +112,7 @@ Relief relief(Material m) {
     case Material::LogBark: return {25.0f, 25.0f, 25.0f, kLogFurrow + 1, 0.006f};
     case Material::BrokenWood: return {80.0f, 80.0f, 8.0f, kBrokenGrain, 0.0015f};
     case Material::Rock: return {3.0f, 3.0f, 3.0f, kRockGrain, 0.06f};  // the grain fBm's first octave
+    case Material::Soil: return {45.0f, 45.0f, 45.0f, kSoilTone + 1, 0.004f};  // soil_albedo()'s crumbs
     default: return {1.0f, 1.0f, 1.0f, 0, 0.0f};
   }
 }
@@ -161,6 +162,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BrokenWood: return broken_wood_albedo(s);
     case Material::Moss: return moss_albedo(s);
     case Material::LeafLitter: return leaf_litter_albedo(s);
+    case Material::Soil: return soil_albedo(s);
     case Material::BarkSpruce:
     case Material::BarkPine:
     case Material::BarkLarch:

@@ -165,6 +165,7 @@ inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterial
     {0.65f, 0.04f, 0.6f},  // AutumnGrass
     {0.75f, 0.04f, 0.4f},  // WinterGrass
     {0.75f, 0.04f, 0.3f},  // DeadBracken
+    {0.9f, 0.04f, 0.0f},  // Soil
 }};
 
 /// The response of material `m`.

@@ -49,6 +49,7 @@ enum NoiseSalt : uint32_t {
   kBrokenGrain = 0x9c0,      ///< Broken wood grain.
   kMossMottle = 0x9e0,       ///< Moss cushion mottling.
   kLitterTone = 0xa00,       ///< Leaf litter tones.
+  kSoilTone = 0xa20,         ///< Soil: humus and mineral patches, crumbs, stones.
 };
 
 }  // namespace silva::render
