@@ -1,5 +1,6 @@
 #include "assets/mesh_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -41,7 +42,13 @@ void perpendicular_frame(const Vec3f& axis, Vec3f& u, Vec3f& v) {
   v = axis.cross(u);
 }
 
-void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height) {
+float TubeLobes::ridge(float a) const {
+  if (count == 0) return 0.0f;
+  const float c = std::max(0.0f, std::cos(float(count) * (a - phase)));
+  return c * c * c * c;
+}
+
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height, const TubeLobes& lobes) {
   const size_t n = nodes.size();
   std::vector<uint32_t> prev_ring, ring;
   Vec3f u, v;
@@ -63,7 +70,20 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, flo
     for (int k = 0; k <= segments; ++k) {
       const float a = 2.0f * std::numbers::pi_v<float> * float(k % segments) / float(segments);
       const Vec3f radial = std::cos(a) * u + std::sin(a) * v;
-      ring.push_back(b.vertex(nodes[i].p + nodes[i].r * radial, radial + slope * t,
+      if (nodes[i].lobe == 0.0f) {
+        ring.push_back(b.vertex(nodes[i].p + nodes[i].r * radial, radial + slope * t,
+                                Vec2f(float(k) / float(segments), tex_v)));
+        continue;
+      }
+      // r(a) = r (1 + lobe ridge(a)); the normal is square to the chord between the neighbouring
+      // points around the ring, so it follows the sampled ridges (a ridge's analytic slope, between
+      // samples, could face away from the triangles drawn).
+      const float step = 2.0f * std::numbers::pi_v<float> / float(segments);
+      const auto lobed = [&](float angle) {
+        return nodes[i].r * (1.0f + nodes[i].lobe * lobes.ridge(angle)) * (std::cos(angle) * u + std::sin(angle) * v);
+      };
+      const Vec3f chord = lobed(a + step) - lobed(a - step);
+      ring.push_back(b.vertex(nodes[i].p + lobed(a), chord.cross(t).normalized() + slope * t,
                               Vec2f(float(k) / float(segments), tex_v)));
     }
     if (i > 0)

@@ -28,14 +28,27 @@ class MeshBuilder {
 
 /// A point on a tube's centre line with the tube radius there.
 struct TubeNode {
-  Vec3f p;   ///< Centre-line point.
-  float r;   ///< Radius at the point (m).
+  Vec3f p;         ///< Centre-line point.
+  float r;         ///< Radius at the point (m).
+  float lobe = 0;  ///< Lobe height over r (TubeLobes); 0: round.
+};
+
+/// Ridges along a tube (a trunk's buttresses): the radius at angle a of the tube's frame is
+/// r (1 + lobe ridge(a)), ridge(a) = max(0, cos(count (a - phase)))^4, so ridges with rounded
+/// valleys between them.
+struct TubeLobes {
+  int count = 0;     ///< Ridges around the tube (0: round).
+  float phase = 0;   ///< Angle of the first ridge (radians).
+  /// ridge(a), in [0, 1].
+  float ridge(float a) const;
 };
 
 /// Adds a closed-side tube along a polyline (>= 2 nodes) with `segments` sides; smooth normals
-/// account for the taper; u goes around (seam duplicated), v along the length in metres / 2, or,
-/// when `v_height` > 0, v = the node's z / v_height (a tree's height fraction, for bark by height).
-void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height = 0);
+/// account for the taper and the lobes; u goes around (seam duplicated), v along the length in
+/// metres / 2, or, when `v_height` > 0, v = the node's z / v_height (a tree's height fraction, for
+/// bark by height).
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height = 0,
+              const TubeLobes& lobes = {});
 
 /// Adds a flat disc (fan) of `segments` sides facing `normal`.
 void add_disc(MeshBuilder& b, const Vec3f& center, const Vec3f& normal, float radius, int segments);

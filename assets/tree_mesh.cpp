@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "assets/root_flare.hpp"
+
 namespace silva::assets {
 
 namespace {
@@ -29,7 +31,7 @@ std::vector<TubeNode> tube_nodes(const Branch& br) {
     break;
   }
   if (br.level == 0 && out.size() >= 2) {
-    const TubeNode flare_top = point_along(br, std::min(0.04f, 0.5f / std::max(br.length, 1.0f)));
+    const TubeNode flare_top = point_along(br, flare_fraction(br));
     out.insert(out.begin() + 1, flare_top);
     out[0].r *= 1.3f;
   }
@@ -106,6 +108,8 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
     add_tube(b, tube, tube_sides(tube.front().r), height);
     tube_triangles += 2 * tube_sides(tube.front().r) * int(tube.size() - 1);
   }
+  if (!s.branches.empty() && tube_nodes(s.branches.front()).size() >= 2)
+    add_root_flare(b, s.branches.front(), look.bark, height);  // on top of the budget: at most 168 triangles
   if (!look.foliage) return;
   const FoliageParams& f = look.cards;
   float total = 0;

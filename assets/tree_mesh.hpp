@@ -45,9 +45,10 @@ struct TreeLook {
   FoliageParams cards;                      ///< The cards.
 };
 
-/// Adds the bark part (tubes, trunk flared at the ground) and the card part of `s` to `b`;
+/// Adds the bark part (tubes, the trunk flared and buttressed at the ground: root_flare.hpp) and the card part of `s` to `b`;
 /// cards whose centre would lie inside the trunk are left out, and the card spacing grows so that
-/// tubes and cards together stay within kTreeTriangleBudget.
+/// tubes and cards together stay within kTreeTriangleBudget (the buttressed foot, at most 168
+/// triangles, comes on top, so it leaves the crown as it was).
 void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng);
 
 /// The tree's collision proxy: a vertical cylinder of the trunk radius at breast height

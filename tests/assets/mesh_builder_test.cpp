@@ -48,6 +48,46 @@ TEST(MeshBuilder, TubeRingsLieOnTheirRadiusAndCloseOutwards) {
   EXPECT_NEAR(signed_volume(m), 2.0f * std::sqrt(2.0f) * 2.0f, 1e-4f);  // octagon area 2 sqrt(2) r^2, height 2
 }
 
+TEST(MeshBuilder, LobedTubeRisesInRidgesAndItsNormalsFaceOut) {
+  // A vertical tube of radius 1 from z = 0 to 1 with 5 ridges of height 0.5 at its foot, none at its top.
+  const TubeLobes lobes{5, 0.3f};
+  const TubeNode nodes[] = {{Vec3f(0, 0, 0), 1.0f, 0.5f}, {Vec3f(0, 0, 1), 1.0f, 0.0f}};
+  MeshBuilder b;
+  b.begin_part(Role::TreeTrunk, Material::BarkBeech);
+  add_tube(b, nodes, 40, 0.0f, lobes);
+  const Mesh m = b.finish();
+  test::expect_valid_mesh(m, "lobed tube");
+  float foot_lo = 9, foot_hi = 0;
+  for (const Vec3f& p : m.positions) {
+    const float r = Vec2f(p.x(), p.y()).norm();
+    if (p.z() > 0.5f) {
+      EXPECT_NEAR(r, 1.0f, 1e-5f);  // the top ring is round
+      continue;
+    }
+    foot_lo = std::min(foot_lo, r);
+    foot_hi = std::max(foot_hi, r);
+  }
+  EXPECT_NEAR(foot_lo, 1.0f, 1e-5f);  // the valleys keep the radius
+  EXPECT_GT(foot_hi, 1.45f);          // ridges reach about 1.5
+  EXPECT_LE(foot_hi, 1.5f + 1e-5f);
+  EXPECT_FLOAT_EQ(lobes.ridge(0.3f), 1.0f);  // a ridge at the phase, a valley between two ridges
+  EXPECT_FLOAT_EQ(lobes.ridge(0.3f + 3.14159265f / 5.0f), 0.0f);
+  // Every vertex normal agrees with the faces it belongs to.
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    const Vec3f &p0 = m.positions[m.indices[t]], &p1 = m.positions[m.indices[t + 1]], &p2 = m.positions[m.indices[t + 2]];
+    const Vec3f face = (p1 - p0).cross(p2 - p0);
+    for (int c = 0; c < 3; ++c) EXPECT_GT(face.dot(m.normals[m.indices[t + size_t(c)]]), 0.0f) << "triangle " << t / 3;
+  }
+  // Without lobes the tube is exactly the round one.
+  const TubeNode round[] = {{Vec3f(0, 0, 0), 1.0f}, {Vec3f(0, 0, 1), 1.0f}};
+  MeshBuilder plain, lobeless;
+  plain.begin_part(Role::TreeTrunk, Material::BarkBeech);
+  lobeless.begin_part(Role::TreeTrunk, Material::BarkBeech);
+  add_tube(plain, round, 12);
+  add_tube(lobeless, round, 12, 0.0f, lobes);
+  EXPECT_EQ(plain.finish().positions, lobeless.finish().positions);
+}
+
 TEST(MeshBuilder, EmptyPartsAreDropped) {
   MeshBuilder b;
   b.begin_part(Role::Stump, Material::Wood);
