@@ -37,14 +37,14 @@ Skeleton dead_skeleton(float length, float r0, float top, Rng& rng) {
   p.shape = CrownShape::Conical;
   p.radius_power = 0.7f;
   p.levels = {{.children = 30, .start = 0.15f, .rotate = 140, .curve_var = 3.0f, .tip_radius = 0.05f, .segments = 8},
-              {.children = 4, .start = 0.3f, .length = 0.18f, .length_var = 0.5f, .down = 80, .down_tip = 60,
-               .down_var = 20, .rotate = 140, .curve_var = 10, .tropism = 0.05f, .tip_radius = 0.2f, .segments = 3},
+              {.children = 4, .start = 0.3f, .length = 0.18f, .length_var = 0.5f, .down = 100, .down_tip = 65,
+               .down_var = 25, .rotate = 140, .curve_var = 18, .tropism = 0.1f, .tip_radius = 0.2f, .segments = 3},
               {.length = 0.4f, .length_var = 0.3f, .down = 50, .down_var = 20, .curve_var = 15, .tip_radius = 0.3f,
                .segments = 2}};
   Skeleton s = grow_skeleton(p, rng);
   if (top < 1.0f) truncate_branch(s, 0, top);
   for (size_t i = s.branches.size(); i-- > 1;)
-    if (s.branches[i].level == 1 && rng.uniform() < 0.5f) truncate_branch(s, i, rng.range(0.2f, 0.7f));
+    if (s.branches[i].level == 1 && rng.uniform() < 0.7f) truncate_branch(s, i, rng.range(0.1f, 0.6f));
   return s;
 }
 

@@ -11,7 +11,8 @@ namespace silva::assets {
 void truncate_branch(Skeleton& s, size_t i, float t);
 
 /// A dead tree of trunk length `length` and base radius `r0` (three orders, the finest meant for
-/// twig cards); most first-order branches broken off short; the trunk snapped at `top` (0-1]
+/// twig cards); first-order branches droop low on the trunk and rise higher up, crooked, 70 % of them
+/// broken off at 10-60 % of their length; the trunk snapped at `top` (0-1]
 /// of its length (1 = intact top).
 Skeleton dead_skeleton(float length, float r0, float top, Rng& rng);
 

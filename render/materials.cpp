@@ -154,7 +154,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::Trail: return trail_albedo(s);
     case Material::BarkConifer: return bark(s, Vec3f(0.15f, 0.085f, 0.055f), 0.45f, 0.0f);
     case Material::BarkBroadleaf: return bark(s, Vec3f(0.2f, 0.18f, 0.15f), 0.25f, 0.6f);
-    case Material::BarkDead: return bark(s, Vec3f(0.33f, 0.31f, 0.28f), 0.5f, 0.0f);
+    case Material::BarkDead: return bark(s, Vec3f(0.24f, 0.22f, 0.195f), 0.6f, 0.0f);  // weathered silver-grey wood
     case Material::Grass: return grass(s, Vec3f(0.1f, 0.19f, 0.04f), Vec3f(0.24f, 0.22f, 0.08f));
     case Material::Rock: return rock_albedo(s);
     case Material::Wood: return wood(s);
