@@ -43,9 +43,6 @@ GeneratedAsset generate_tall_grass(Rng& rng);
 /// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
 /// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);
-/// Wood sorrel: a carpet patch 0.4-0.9 m across of 30-70 trefoil leaves 4-6 cm wide held level
-/// 4-11 cm above the floor on 2 mm stalks.
-GeneratedAsset generate_wood_sorrel(Rng& rng);
 /// Bilberry: dense dwarf shrub 0.2-0.5 m, 14-27 green ribbon stems carrying small-leaf cards.
 GeneratedAsset generate_bilberry(Rng& rng);
 /// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side

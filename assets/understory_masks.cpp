@@ -132,19 +132,6 @@ std::shared_ptr<const AlphaMask> hazel_leaves_mask() {
   return mask;
 }
 
-std::shared_ptr<const AlphaMask> trefoil_leaf_mask() {
-  static const auto mask = [] {
-    std::vector<Stroke> s;
-    const Vec2f c(0.5f, 0.5f);
-    for (const float deg : {0.0f, 120.0f, 240.0f})
-      for (const float lobe : {-13.0f, 13.0f})  // two lobes per leaflet, the notch between them
-        s.push_back({c, stroke_towards(c, deg + lobe, 0.33f), 0.012f, 0.1f, Shape::Tapered,
-                     uint8_t(lobe < 0 ? 200 : 230)});
-    return rasterise_strokes(s, 64, 64);
-  }();
-  return mask;
-}
-
 std::shared_ptr<const AlphaMask> bramble_leaf_mask() {
   static const auto mask = [] {
     const Vec2f base(0.5f, 1.0f), hub(0.5f, 0.62f);

@@ -29,10 +29,6 @@ std::shared_ptr<const AlphaMask> hazel_leaves_mask();
 /// Bramble: one compound leaf of five toothed ovate leaflets on a stalk from v = 1 (64 x 64).
 std::shared_ptr<const AlphaMask> bramble_leaf_mask();
 
-/// Wood sorrel: one leaf of three heart-shaped leaflets, notched at their tips, meeting at the card
-/// centre (64 x 64).
-std::shared_ptr<const AlphaMask> trefoil_leaf_mask();
-
 /// Leaf litter: a few scattered oval and lobed fallen leaves (64 x 64).
 std::shared_ptr<const AlphaMask> litter_leaves_mask();
 

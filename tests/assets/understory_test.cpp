@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "assets/factory.hpp"
-#include "assets/mask_strokes.hpp"
 #include "assets/rock_shape.hpp"
 #include "assets/understory_masks.hpp"
 
@@ -61,38 +60,6 @@ TEST(Understory, FernLeafletsArePairedAndTheFrondTapers) {
   int switches = 0;
   for (int y = 1; y < m.height; ++y) switches += (m.alpha[size_t(y * m.width + 14)] != 0) != (m.alpha[size_t((y - 1) * m.width + 14)] != 0);
   EXPECT_GE(switches, 16);
-}
-
-TEST(Understory, WoodSorrelLeavesAreTrefoilsWithNotchedLeafletsOnStalks) {
-  const AlphaMask& m = *trefoil_leaf_mask();
-  const auto opaque_at = [&](Vec2f p) { return m.opaque(p.x(), p.y()); };
-  const Vec2f c(0.5f, 0.5f);
-  EXPECT_TRUE(opaque_at(c));
-  int sectors[3] = {0, 0, 0};
-  for (int y = 0; y < m.height; ++y)
-    for (int x = 0; x < m.width; ++x) {
-      if (!m.opaque_texel(y * m.width + x)) continue;
-      const float deg = std::atan2(float(x) + 0.5f - 32.0f, 32.0f - float(y) - 0.5f) * 180.0f / 3.14159265f;
-      sectors[int(std::fmod(deg + 360.0f + 60.0f, 360.0f) / 120.0f)]++;  // leaflets at 0, 120 and 240 degrees
-    }
-  for (const int n : sectors) {
-    EXPECT_GT(n, 200);
-    EXPECT_NEAR(double(n), double(sectors[0]), 0.15 * double(sectors[0]));
-  }
-  for (const float leaflet : {0.0f, 120.0f, 240.0f}) {
-    EXPECT_FALSE(opaque_at(stroke_towards(c, leaflet, 0.4f))) << "the notch at the tip of leaflet " << leaflet;
-    EXPECT_TRUE(opaque_at(stroke_towards(c, leaflet + 13.0f, 0.3f))) << "a lobe of leaflet " << leaflet;
-    EXPECT_FALSE(opaque_at(stroke_towards(c, leaflet + 60.0f, 0.3f))) << "between two leaflets";
-  }
-  const Factory& f = factory("wood_sorrel");
-  for (uint32_t v = 0; v < 4; ++v) {
-    const Asset asset = make_asset(f, kDefaultAssetSeed, v);
-    const Mesh& mesh = asset.lods()[0];
-    ASSERT_EQ(mesh.parts.size(), 2u);  // the leaves, then as many stalks
-    EXPECT_EQ(mesh.parts[0].mask, trefoil_leaf_mask());
-    EXPECT_EQ(mesh.parts[1].mask, nullptr);
-    EXPECT_EQ(mesh.parts[0].index_count, mesh.parts[1].index_count);
-  }
 }
 
 TEST(Understory, RockDisplacementIsBoundedAndNotASphere) {
