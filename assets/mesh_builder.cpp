@@ -50,6 +50,7 @@ float TubeLobes::ridge(float a) const {
 
 void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height, const TubeLobes& lobes) {
   const size_t n = nodes.size();
+  const float step = 2.0f * std::numbers::pi_v<float> / float(segments);  // angle between ring points
   std::vector<uint32_t> prev_ring, ring;
   Vec3f u, v;
   float length = 0;
@@ -78,7 +79,6 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, flo
       // r(a) = r (1 + lobe ridge(a)); the normal is square to the chord between the neighbouring
       // points around the ring, so it follows the sampled ridges (a ridge's analytic slope, between
       // samples, could face away from the triangles drawn).
-      const float step = 2.0f * std::numbers::pi_v<float> / float(segments);
       const auto lobed = [&](float angle) {
         return nodes[i].r * (1.0f + nodes[i].lobe * lobes.ridge(angle)) * (std::cos(angle) * u + std::sin(angle) * v);
       };

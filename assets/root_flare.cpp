@@ -31,7 +31,7 @@ void add_root_flare(MeshBuilder& b, const Branch& trunk, Material bark, float v_
   const float lobe = buttress_lobe(bark);
   const TubeNode base = trunk.nodes.front(), top = point_along(trunk, flare_fraction(trunk));
   const Vec3f axis = (top.p - base.p).normalized();
-  const float foot = 1.3f * base.r;  // the round flare's radius at the ground (tube_nodes)
+  const float foot = kFlareFoot * base.r;
   const std::array<TubeNode, 4> nodes = {{
       {base.p - 0.2f * axis, foot, lobe},
       {base.p, foot, lobe},

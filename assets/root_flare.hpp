@@ -7,6 +7,9 @@
 
 namespace silva::assets {
 
+/// The trunk's radius at the ground over its skeleton's base radius (the round flare of its tube).
+inline constexpr float kFlareFoot = 1.3f;
+
 /// Fraction of the trunk's length over which its foot flares: 4 %, at most 0.5 m.
 float flare_fraction(const Branch& trunk);
 

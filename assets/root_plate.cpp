@@ -54,10 +54,18 @@ Vec3f above_pit(Vec3f p, const RootPlateSize& size) {
 /// Unit vector at angle a in the plate's plane (0 = +y, counter-clockwise about +x).
 Vec3f in_plane(float a) { return {0.0f, std::cos(a), std::sin(a)}; }
 
-/// Adds the soil lens (rings along +x, lumpy except at the front) and its front face, `depth` deep.
-void add_soil_lens(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Outline& outline, float depth) {
+/// One plate's drawn shape, shared by its parts.
+struct Plate {
+  RootPlateSize size;  ///< Where and how large.
+  Outline outline;     ///< Its lobed outline.
+  float depth;         ///< How far its back lies behind its front face (m).
+  Vec3f centre;        ///< plate_centre(size).
+};
+
+/// Adds the soil lens (rings along +x, lumpy except at the front) and its front face.
+void add_soil_lens(MeshBuilder& b, Rng& rng, const Plate& plate) {
   const ShapeNoise lumps(rng);
-  const Vec3f c = plate_centre(size);
+  const auto& [size, outline, depth, c] = plate;
   std::vector<Vec3f> rings;
   for (size_t r = 0; r < kRingBack.size(); ++r)
     for (int k = 0; k < kAround; ++k) {
@@ -78,8 +86,8 @@ void add_soil_lens(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Ou
 
 /// Thick roots leaving the rim: outward, bending back behind the plate and drooping, broken off
 /// 0.35-0.9 of the plate's radius out.
-void add_rim_roots(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Outline& outline, float depth) {
-  const Vec3f c = plate_centre(size);
+void add_rim_roots(MeshBuilder& b, Rng& rng, const Plate& plate) {
+  const auto& [size, outline, depth, c] = plate;
   const int roots = 7 + int(rng.below(6));
   for (int k = 0; k < roots; ++k) {
     const float a = 2.0f * kPi * (float(k) + rng.range(-0.45f, 0.45f)) / float(roots);
@@ -89,13 +97,14 @@ void add_rim_roots(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Ou
     const Vec3f start = c + Vec3f(-rng.range(0.2f, 0.6f) * depth, 0, 0) + 0.8f * rim * out;
     const float r0 = size.trunk_radius * rng.range(0.18f, 0.38f);
     std::array<TubeNode, 4> nodes;
+    const float step = reach / float(nodes.size() - 1);
     Vec3f p = above_pit(start, size);
     for (size_t i = 0; i < nodes.size(); ++i) {
       const float f = float(i) / float(nodes.size() - 1);
       nodes[i] = {p, std::max(kMinTubeRadius, r0 * (1.0f - 0.6f * f))};  // broken off, not tapered to a point
-      const float step = reach / float(nodes.size() - 1);
       Vec3f dir = (out + swing * f * side - (back * f + 0.1f) * Vec3f::UnitX() - 0.5f * f * f * Vec3f::UnitZ()).normalized();
-      if (above_pit(p + step * dir, size) != p + step * dir) dir.z() = std::max(dir.z(), 0.0f);  // along the pit's floor
+      const Vec3f next = p + step * dir;
+      if (above_pit(next, size) != next) dir.z() = std::max(dir.z(), 0.0f);  // along the pit's floor
       p += step * dir.normalized();
     }
     add_tube(b, nodes, 6);
@@ -103,8 +112,8 @@ void add_rim_roots(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Ou
 }
 
 /// Short torn root ends sticking out of the back of the lens.
-void add_torn_ends(MeshBuilder& b, Rng& rng, const RootPlateSize& size, const Outline& outline, float depth) {
-  const Vec3f c = plate_centre(size);
+void add_torn_ends(MeshBuilder& b, Rng& rng, const Plate& plate) {
+  const auto& [size, outline, depth, c] = plate;
   const int ends = 5 + int(rng.below(6));
   for (int k = 0; k < ends; ++k) {
     const float a = rng.range(0.0f, 2.0f * kPi), rho = rng.range(0.1f, 0.8f);
@@ -140,12 +149,12 @@ void add_clods(MeshBuilder& b, Rng& rng, const RootPlateSize& size) {
 
 void add_root_plate(MeshBuilder& b, Rng& rng, const RootPlateSize& size) {
   const Outline outline(rng);
-  const float depth = size.radius * rng.range(0.3f, 0.5f);
-  add_soil_lens(b, rng, size, outline, depth);
+  const Plate plate{size, outline, size.radius * rng.range(0.3f, 0.5f), plate_centre(size)};
+  add_soil_lens(b, rng, plate);
   b.begin_part(Role::Obstacle, Material::Soil);
   add_clods(b, rng, size);
-  add_torn_ends(b, rng, size, outline, depth);  // roots caked with soil, as fresh windthrow shows them
-  add_rim_roots(b, rng, size, outline, depth);
+  add_torn_ends(b, rng, plate);  // roots caked with soil, as fresh windthrow shows them
+  add_rim_roots(b, rng, plate);
 }
 
 }  // namespace silva::assets

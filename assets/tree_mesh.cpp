@@ -33,7 +33,7 @@ std::vector<TubeNode> tube_nodes(const Branch& br) {
   if (br.level == 0 && out.size() >= 2) {
     const TubeNode flare_top = point_along(br, flare_fraction(br));
     out.insert(out.begin() + 1, flare_top);
-    out[0].r *= 1.3f;
+    out[0].r *= kFlareFoot;
   }
   return out;
 }
@@ -102,14 +102,15 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
     for (const TubeNode& n : br.nodes) height = std::max(height, n.p.z());
   b.begin_part(look.bark_role, look.bark);
   int tube_triangles = 0;
+  bool trunk_tube = false;
   for (const Branch& br : s.branches) {
     const std::vector<TubeNode> tube = tube_nodes(br);
     if (tube.size() < 2) continue;
     add_tube(b, tube, tube_sides(tube.front().r), height);
     tube_triangles += 2 * tube_sides(tube.front().r) * int(tube.size() - 1);
+    trunk_tube = trunk_tube || &br == &s.branches.front();
   }
-  if (!s.branches.empty() && tube_nodes(s.branches.front()).size() >= 2)
-    add_root_flare(b, s.branches.front(), look.bark, height);  // on top of the budget: at most 168 triangles
+  if (trunk_tube) add_root_flare(b, s.branches.front(), look.bark, height);  // on top of the budget: at most 168 triangles
   if (!look.foliage) return;
   const FoliageParams& f = look.cards;
   float total = 0;
