@@ -1,77 +1,41 @@
 #include "render/foliage_aa.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <cstdint>
 #include <limits>
 
 namespace silva::render {
 
 namespace {
 
-/// Depth of pixel i for layer tests: metric z, or infinity where nothing was hit.
-float layer_depth(const GBuffer& g, size_t i) {
-  return g.depth[i] > 0.0f ? g.depth[i] : std::numeric_limits<float>::infinity();
-}
-
 /// Weight of radiance `c` in a blend at `exposure`: 1 / (1 + exposed luminance).
 float tone_weight(const Vec3f& c, float exposure) {
   return 1.0f / (1.0f + exposure * (0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z()));
 }
 
-/// Per-pixel inputs of the blend, computed once: layer_depth, minified_weight, tone_weight and whether a
-/// minified mask lies within one pixel along the row.
-struct BlendPlanes {
-  std::vector<float> layer, weight, tone;
-  std::vector<uint8_t> row_near;
+/// One row of the frame with its blend inputs.
+struct RowView {
+  const Vec3f* rgb;
+  const float* layer;
+  const float* weight;
+  const float* tone;
 };
 
-/// Adds neighbour q (tent weight `tent`) of a pixel at layer depth dp with blend weight wp to sum and total.
-inline void add_neighbour(const LinearFrame& in, const BlendPlanes& b, size_t q, float tent, float dp, float wp,
-                          Vec3f& sum, float& total) {
-  const float dq = b.layer[q];
-  const float behind = dq < std::numeric_limits<float>::infinity() && dq >= dp * (1.0f - kLayerTolerance) ? wp : 0.0f;
-  const float in_front = dq <= dp * (1.0f + kLayerTolerance) ? b.weight[q] : 0.0f;
-  const float w = tent * std::max(behind, in_front) * b.tone[q];
-  sum += in.rgb[q] * w;
-  total += w;
-}
+/// Running sum of one pixel's blend: the centre pixel's layer depth dp and blend weight wp, and the weighted sums.
+struct PixelBlend {
+  float dp, wp;
+  Vec3f sum;
+  float total;
 
-/// The coverage blend of pixel (u, v) of `in` (see blend_minified_masks).
-Vec3f blend_pixel(const GBuffer& g, const LinearFrame& in, const BlendPlanes& b, int u, int v) {
-  const size_t w = size_t(g.width), p = size_t(v) * w + size_t(u);
-  const float dp = b.layer[p], wp = b.weight[p];
-  Vec3f sum = in.rgb[p] * (4.0f * b.tone[p]);
-  float total = 4.0f * b.tone[p];
-  if (u > 0 && v > 0 && u + 1 < g.width && v + 1 < g.height) {  // inside: no bounds per neighbour
-    for (const size_t q : {p - w, p - 1, p + 1, p + w}) add_neighbour(in, b, q, 2.0f, dp, wp, sum, total);
-    for (const size_t q : {p - w - 1, p - w + 1, p + w - 1, p + w + 1}) add_neighbour(in, b, q, 1.0f, dp, wp, sum, total);
-    return sum / total;
+  /// Adds neighbour x of row r with tent weight `tent`.
+  void add(const RowView& r, size_t x, float tent) {
+    const float dq = r.layer[x];
+    const float behind = dq < std::numeric_limits<float>::infinity() && dq >= dp * (1.0f - kLayerTolerance) ? wp : 0.0f;
+    const float in_front = dq <= dp * (1.0f + kLayerTolerance) ? r.weight[x] : 0.0f;
+    const float w = tent * std::max(behind, in_front) * r.tone[x];
+    sum += r.rgb[x] * w;
+    total += w;
   }
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int x = u + dx, y = v + dy;
-      if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= g.width || y >= g.height) continue;
-      add_neighbour(in, b, size_t(y) * w + size_t(x), (dx == 0 || dy == 0) ? 2.0f : 1.0f, dp, wp, sum, total);
-    }
-  return sum / total;
-}
-
-/// True when a minified mask lies within one pixel of (u, v) (BlendPlanes::row_near of the rows around).
-bool near_mask(const GBuffer& g, const BlendPlanes& b, int u, int v) {
-  const size_t w = size_t(g.width), i = size_t(v) * w + size_t(u);
-  return b.row_near[i] != 0 || (v > 0 && b.row_near[i - w] != 0) || (v + 1 < g.height && b.row_near[i + w] != 0);
-}
-
-/// Runs `row(v)` for every row of `g` in parallel.
-template <class Row>
-void each_row(const GBuffer& g, Row row) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-    for (int v = rows.begin(); v < rows.end(); ++v) row(v, size_t(v) * size_t(g.width));
-  });
-}
+};
 
 }  // namespace
 
@@ -83,31 +47,67 @@ bool has_minified_masks(const GBuffer& g) {
   return std::any_of(g.mask_texels.begin(), g.mask_texels.end(), [](float m) { return m > kMinifiedStart; });
 }
 
-void blend_minified_masks(const GBuffer& g, float exposure, LinearFrame& frame, LinearFrame& scratch) {
-  BlendPlanes b{std::vector<float>(g.size()), std::vector<float>(g.size()), std::vector<float>(g.size()),
-                std::vector<uint8_t>(g.size())};
-  each_row(g, [&](int, size_t row) {
-    for (size_t i = row; i < row + size_t(g.width); ++i) {
-      b.layer[i] = layer_depth(g, i);
-      b.weight[i] = minified_weight(g.mask_texels[i]);
-      b.tone[i] = tone_weight(frame.rgb[i], exposure);
+MaskBlendRows::MaskBlendRows(const GBuffer& g, float exposure, const LinearFrame& frame)
+    : g_(g), frame_(frame), exposure_(exposure) {}
+
+const MaskBlendRows::RowPlanes& MaskBlendRows::planes(int v) {
+  RowPlanes& p = ring_[size_t(v) % ring_.size()];
+  if (p.row == v) return p;
+  const size_t w = size_t(g_.width), first = size_t(v) * w;
+  p.row = v;
+  p.layer.resize(w);
+  p.weight.resize(w);
+  p.tone.resize(w);
+  p.near.resize(w);
+  for (size_t u = 0; u < w; ++u) {
+    const float depth = g_.depth[first + u];
+    p.layer[u] = depth > 0.0f ? depth : std::numeric_limits<float>::infinity();
+    p.weight[u] = minified_weight(g_.mask_texels[first + u]);
+    p.tone[u] = tone_weight(frame_.rgb[first + u], exposure_);
+  }
+  for (size_t u = 0; u < w; ++u)
+    p.near[u] = p.weight[u] > 0.0f || (u > 0 && p.weight[u - 1] > 0.0f) || (u + 1 < w && p.weight[u + 1] > 0.0f);
+  return p;
+}
+
+void MaskBlendRows::blend(int v, Vec3f* out) {
+  const size_t w = size_t(g_.width);
+  const Vec3f* rgb = &frame_.rgb[size_t(v) * w];
+  const RowPlanes& centre = planes(v);
+  const RowPlanes* above = v > 0 ? &planes(v - 1) : nullptr;
+  const RowPlanes* below = v + 1 < g_.height ? &planes(v + 1) : nullptr;
+  const auto view = [&](const RowPlanes* p, int dy) {
+    return p ? RowView{rgb + std::ptrdiff_t(dy) * std::ptrdiff_t(w), p->layer.data(), p->weight.data(), p->tone.data()}
+             : RowView{};
+  };
+  const std::array<RowView, 3> rows{view(above, -1), view(&centre, 0), view(below, 1)};
+  for (size_t u = 0; u < w; ++u) {
+    const bool near = centre.near[u] != 0 || (above && above->near[u] != 0) || (below && below->near[u] != 0);
+    if (!near) {
+      out[u] = rgb[u];
+      continue;
     }
-  });
-  each_row(g, [&](int, size_t row) {
-    for (int u = 0; u < g.width; ++u) {
-      const size_t i = row + size_t(u);
-      b.row_near[i] = b.weight[i] > 0.0f || (u > 0 && b.weight[i - 1] > 0.0f) || (u + 1 < g.width && b.weight[i + 1] > 0.0f);
+    const float tone = centre.tone[u];
+    PixelBlend b{centre.layer[u], centre.weight[u], rgb[u] * (4.0f * tone), 4.0f * tone};
+    if (above && below && u > 0 && u + 1 < w) {  // inside: no bounds per neighbour
+      b.add(rows[0], u, 2.0f);
+      b.add(rows[1], u - 1, 2.0f);
+      b.add(rows[1], u + 1, 2.0f);
+      b.add(rows[2], u, 2.0f);
+      b.add(rows[0], u - 1, 1.0f);
+      b.add(rows[0], u + 1, 1.0f);
+      b.add(rows[2], u - 1, 1.0f);
+      b.add(rows[2], u + 1, 1.0f);
+    } else {
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const bool inside_row = (dy < 0 && above) || dy == 0 || (dy > 0 && below);
+          if ((dx == 0 && dy == 0) || !inside_row || (dx < 0 && u == 0) || (dx > 0 && u + 1 == w)) continue;
+          b.add(rows[size_t(dy + 1)], size_t(std::ptrdiff_t(u) + dx), (dx == 0 || dy == 0) ? 2.0f : 1.0f);
+        }
     }
-  });
-  scratch.resize(frame.width, frame.height);  // blended values of the pixels near a mask, then copied back
-  each_row(g, [&](int v, size_t row) {
-    for (int u = 0; u < g.width; ++u)
-      if (near_mask(g, b, u, v)) scratch.rgb[row + size_t(u)] = blend_pixel(g, frame, b, u, v);
-  });
-  each_row(g, [&](int v, size_t row) {
-    for (int u = 0; u < g.width; ++u)
-      if (near_mask(g, b, u, v)) frame.rgb[row + size_t(u)] = scratch.rgb[row + size_t(u)];
-  });
+    out[u] = b.sum / b.total;
+  }
 }
 
 }  // namespace silva::render

@@ -1,13 +1,13 @@
 #include "render/shade.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "core/base_color.hpp"
@@ -212,6 +212,65 @@ void encode_frame(const ShadeInputs& in, const CameraModel& model, float exposur
   });
 }
 
+/// What shading one row reads besides its inputs: the frame's sky, fog, weather look, lighting and AO.
+struct RowShading {
+  const ShadeInputs& in;
+  const Sky& sky;
+  const HeightFog& fog;
+  const WeatherLook& look;
+  const SurfaceLighting& lighting;
+  const HalfResAo& half_ao;
+};
+
+/// Shades row v of the G-buffer into radiance (g.width values) with `terms` as the row's scratch.
+void shade_row(const RowShading& s, RowTerms& terms, int v, Vec3f* radiance) {
+  const GBuffer& g = s.in.gbuffer;
+  const size_t row = size_t(v) * size_t(g.width);
+  terms.evaluate(s.in, s.sky, s.fog, s.half_ao, v);
+  terms.rough.start(size_t(g.width));
+  terms.rough_at.clear();
+  view_directions_row(s.in.camera, v, terms.view_dir.data());
+  for (int u = 0; u < g.width; ++u) {
+    const Vec3f& dir = terms.view_dir[size_t(u)];
+    if (g.depth[row + size_t(u)] == 0.0f) {
+      radiance[u] = s.sky.radiance(dir);
+      continue;
+    }
+    const SurfaceSample sample = surface_sample(s.in, s.look, terms, u, v, dir);
+    if (sample.roughness < kSharpReflection) {
+      radiance[u] = light_surface(s.lighting, sample);
+      continue;
+    }
+    terms.rough.push(sample);
+    terms.rough_at.push_back(uint32_t(u));
+  }
+  terms.rough.pad();
+  terms.rough_out.resize(terms.rough.padded_size());
+  light_rough_surfaces(s.lighting, terms.rough, terms.rough_out.data());
+  for (size_t k = 0; k < terms.rough_at.size(); ++k) radiance[terms.rough_at[k]] = terms.rough_out[k];
+}
+
+/// Rows per band: a band's rows are shaded by one task and, with the coverage blend, all but its first and
+/// last finished as soon as the row below them is shaded (those two wait for the neighbouring bands).
+constexpr int kBandRows = 16;
+
+/// Runs band(first, end) for every band of kBandRows rows of a frame `height` rows high, in parallel.
+template <class Band>
+void each_band(int height, Band band) {
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  tbb::parallel_for(tbb::blocked_range<int>(0, bands), [&](const tbb::blocked_range<int>& range) {
+    for (int b = range.begin(); b < range.end(); ++b) band(b * kBandRows, std::min(height, (b + 1) * kBandRows));
+  });
+}
+
+/// One thread's scratch for shading and finishing rows.
+struct RowWorker {
+  RowTerms terms;                      ///< The row's terms.
+  std::vector<Vec3f> row;              ///< A row's radiance: shaded (without a whole frame) or blended.
+  std::optional<RowEncoder> encoder;   ///< Encodes finished rows, unless the whole frame is encoded at the end.
+  std::optional<MaskBlendRows> blend;  ///< The coverage blend, when the frame has minified masks.
+};
+
 }  // namespace
 
 ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
@@ -238,61 +297,56 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   }
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera);
   const HalfResAo half_ao(g, in.camera);
-  std::atomic<uint64_t> bare_soil{0};
-  const bool soften = in.mask_coverage && has_minified_masks(g);  // the blend reads neighbouring rows: shade the whole frame first
-  const bool whole_frame = needs_whole_frame(in.model) || metered || soften;
-  LinearFrame frame, scratch;
-  if (whole_frame) frame.resize(g.width, g.height);
-  tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-    RowTerms terms(g.width);
-    std::optional<RowEncoder> encoder;  // encodes each row as it is shaded, unless the optics need the frame
-    if (!whole_frame) encoder.emplace(in.camera, exposed_model, exposure, in.seed, key, in.white_balance);
-    std::vector<Vec3f> row_radiance(whole_frame ? 0 : size_t(g.width));
-    for (int v = rows.begin(); v < rows.end(); ++v) {
-      const size_t row = size_t(v) * size_t(g.width);
-      Vec3f* radiance = whole_frame ? &frame.rgb[row] : row_radiance.data();
-      terms.evaluate(in, sky, fog, half_ao, v);
-      terms.rough.start(size_t(g.width));
-      terms.rough_at.clear();
-      view_directions_row(in.camera, v, terms.view_dir.data());
-      for (int u = 0; u < g.width; ++u) {
-        const Vec3f& dir = terms.view_dir[size_t(u)];
-        if (g.depth[row + size_t(u)] == 0.0f) {
-          radiance[u] = sky.radiance(dir);
-          continue;
-        }
-        const SurfaceSample sample = surface_sample(in, look, terms, u, v, dir);
-        if (sample.roughness < kSharpReflection) {
-          radiance[u] = light_surface(lighting, sample);
-          continue;
-        }
-        terms.rough.push(sample);
-        terms.rough_at.push_back(uint32_t(u));
-      }
-      terms.rough.pad();
-      terms.rough_out.resize(terms.rough.padded_size());
-      light_rough_surfaces(lighting, terms.rough, terms.rough_out.data());
-      for (size_t k = 0; k < terms.rough_at.size(); ++k) radiance[terms.rough_at[k]] = terms.rough_out[k];
-      if (overlay.active() && !whole_frame) overlay.apply_row(v, radiance, g.width);  // else after the blend
-      if (encoder) encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
-    }
-    bare_soil += terms.bare_soil;
+  const RowShading shading{in, sky, fog, look, lighting, half_ao};
+  const bool soften = in.mask_coverage && has_minified_masks(g);  // the blend reads the rows above and below
+  const bool deferred = needs_whole_frame(in.model) || metered;   // metering and optics need every row first
+  LinearFrame frame, finished;  // shaded rows (when blended or deferred); blended rows (when both)
+  if (soften || deferred) frame.resize(g.width, g.height);
+  if (soften && deferred) finished.resize(g.width, g.height);
+  tbb::enumerable_thread_specific<RowWorker> workers([&] {
+    RowWorker w{RowTerms(g.width), std::vector<Vec3f>(size_t(g.width)), std::nullopt, std::nullopt};
+    if (!deferred) w.encoder.emplace(in.camera, exposed_model, exposure, in.seed, key, in.white_balance);
+    if (soften) w.blend.emplace(g, exposure, frame);  // the preset's exposure when metered
+    return w;
   });
-  if (whole_frame) {
-    if (soften) blend_minified_masks(g, exposure, frame, scratch);  // the preset's exposure when metered
-    if (overlay.active())
-      tbb::parallel_for(tbb::blocked_range<int>(0, g.height), [&](const tbb::blocked_range<int>& rows) {
-        for (int v = rows.begin(); v < rows.end(); ++v) overlay.apply_row(v, &frame.rgb[size_t(v) * size_t(g.width)], g.width);
-      });
+  const auto shaded_row = [&](RowWorker& w, int v) {
+    return frame.rgb.empty() ? w.row.data() : &frame.rgb[size_t(v) * size_t(g.width)];
+  };
+  const auto finish = [&](RowWorker& w, int v) {  // blend, weather overlay, then encode or keep for the frame
+    const size_t row = size_t(v) * size_t(g.width);
+    Vec3f* radiance = soften ? w.row.data() : shaded_row(w, v);
+    if (soften) w.blend->blend(v, radiance);
+    if (overlay.active()) overlay.apply_row(v, radiance, g.width);
+    if (!deferred) w.encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
+    else if (soften) std::copy(radiance, radiance + g.width, &finished.rgb[row]);
+  };
+  each_band(g.height, [&](int first, int end) {
+    RowWorker& w = workers.local();
+    for (int v = first; v < end; ++v) {
+      shade_row(shading, w.terms, v, shaded_row(w, v));
+      if (!soften) finish(w, v);
+      else if (v - 1 > first) finish(w, v - 1);
+    }
+  });
+  if (soften)
+    each_band(g.height, [&](int first, int end) {
+      RowWorker& w = workers.local();
+      finish(w, first);
+      if (end - 1 > first) finish(w, end - 1);
+    });
+  uint64_t bare_soil = 0;
+  for (const RowWorker& w : workers) bare_soil += w.terms.bare_soil;
+  if (deferred) {
+    if (soften) std::swap(frame, finished);
     if (metered) {
       ev100 = ev100_for_luminance(log_average_luminance(frame)) - in.exposure_compensation_ev;
       exposure = exposure_multiplier(ev100);
       exposed_model = exposed_camera_model(in.model, ev100);
     }
-    if (needs_whole_frame(in.model)) apply_optics(frame, scratch, g.depth, in.camera, in.model);
+    if (needs_whole_frame(in.model)) apply_optics(frame, finished, g.depth, in.camera, in.model);
     encode_frame(in, exposed_model, exposure, key, frame, rgb_out);
   }
-  return {bare_soil.load(), ev100};
+  return {bare_soil, ev100};
 }
 
 }  // namespace silva::render

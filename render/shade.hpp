@@ -47,7 +47,7 @@ struct ShadeCounts {
 /// (wet or snowy as the weather says) lit by the sun (shadow-mapped, back-lit foliage translucency)
 /// and the sky's spherical-harmonics ambient light (screen-space AO at half resolution, reused only
 /// across pixels of similar depth; under the canopy map's trees partly replaced by their green scattered light), through exponential height fog; sky pixels get the Preetham /
-/// overcast sky; with mask_coverage, pixels of minified leaf masks blended to their coverage (blend_minified_masks);
+/// overcast sky; with mask_coverage, pixels of minified leaf masks blended to their coverage (MaskBlendRows);
 /// falling rain or snow over the radiance (thinner under the canopy over the camera). Then the camera model: motion blur, depth
 /// of field and chromatic aberration on the whole linear frame (only when one is on), the EV100
 /// exposure (the preset's, or metered from the whole linear frame with auto_exposure; minus the
