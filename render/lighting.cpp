@@ -32,7 +32,7 @@ constexpr PresetField kFields[] = {
     {"cloud_color", nullptr, &P::cloud_color, 0.0f, 100.0f, "albedo of the clouds, linear RGB"},
     {"cloud_transmittance", &P::cloud_transmittance, nullptr, 0.0f, 1.0f, "fraction of the clear-sky daylight a full overcast lets through"},
     {"star_density", &P::star_density, nullptr, 0.0f, 0.05f, "fraction of sky cells holding a star"},
-    {"ev100", &P::ev100, nullptr, -10.0f, 20.0f, "camera exposure value at ISO 100: sunny 15, dusk 12, moonlight -2 (higher = darker image)"},
+    {"ev100", &P::ev100, nullptr, -10.0f, 20.0f, "camera exposure value at ISO 100: open sun 15, forest 13.5, dusk 11.5, moonlight -2 (higher = darker image)"},
 };
 
 using W = WeatherPreset;
@@ -65,7 +65,7 @@ LightingPreset preset_dusk() {
   p.fog_height_falloff = 0.1f;
   p.fog_sun_scatter = 0.9f;
   p.cloud_cover = 0.45f;
-  p.ev100 = 12.5f;
+  p.ev100 = 11.5f;
   return p;
 }
 

@@ -59,7 +59,7 @@ struct LightingPreset {
   Rgb cloud_color{1.0f, 1.0f, 1.0f}; ///< Albedo of clouds.
   float cloud_transmittance = 0.35f; ///< Fraction of the clear-sky daylight a full overcast lets through.
   float star_density = 0.0f;         ///< Fraction of sky cells holding a star (night), 0..0.05.
-  float ev100 = 14.5f;               ///< Camera exposure value at ISO 100 (sunny day 15, half a stop less for a forest; dusk ~12, moonlight ~ -2).
+  float ev100 = 13.5f;               ///< Camera exposure value at ISO 100 (sunny day 15; 13.5 exposes a forest's shade; dusk ~11.5, moonlight ~ -2).
   WeatherPreset weather;             ///< The weather on top (lighting.weather); not part of a [lighting.presets] table.
 
   /// Field-wise equality.

@@ -34,7 +34,7 @@ Sky::Sky(const LightingPreset& preset) : preset_(preset) {
   const double elevation = double(preset.sun_elevation_deg) * kPi / 180.0;
   const double turbidity = double(preset.turbidity);
   const PreethamSky model(turbidity, elevation);
-  const Vec3d sky_scale = to_vec(preset.sky_tint).cast<double>() * double(preset.sky_intensity);
+  const Vec3d sky_scale = to_vec(preset.sky_tint).cast<double>() * (double(preset.sky_intensity) * kPreethamSkyCalibration);
   const Vec3d sun_dir = to_sun.cast<double>();
 
   // Tabulate the clear sky over (s = sqrt(cos θ), t = sin(γ/2)); γ from t, θ from s.

@@ -68,7 +68,7 @@ TEST(GenerateRandomize, DrawsArePerFrameInRangeRecordedAndTheSameForAnyThreadCou
     EXPECT_LE(l.exposure_compensation_ev, 0.5 + 1e-6);
     EXPECT_EQ(l.exposure, "preset");
     ASSERT_TRUE(l.ev100.has_value());
-    EXPECT_NEAR(*l.ev100, 14.5 - l.exposure_compensation_ev, 1e-5);  // the day preset's ev100
+    EXPECT_NEAR(*l.ev100, 13.5 - l.exposure_compensation_ev, 1e-5);  // the day preset's ev100
     elevations.insert(l.sun_elevation_deg);
     white_balances.insert(l.white_balance_k);
     rgb.insert(read_file(seq / "rgb" / (std::string(name) + ".png")));
