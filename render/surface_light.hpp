@@ -23,8 +23,10 @@ inline constexpr float kSharpReflection = 0.3f;
 inline const Vec3f kTransmissionTint(1.3f, 1.15f, 0.55f);
 
 /// Light under a closed canopy per unit of the open ground's irradiance (sun and sky): what the leaves
-/// scatter and let through, green (a few per cent, as measured under broadleaf and spruce canopies).
-inline const Vec3f kCanopyScatter(0.02f, 0.035f, 0.01f);
+/// scatter and let through (3 % of the luminance, as measured under broadleaf and spruce canopies), green
+/// but not saturated: the sky seen through the small gaps of a closed crown adds its blue, and a grey bark
+/// in this light reads grey-green (sRGB green / red about 1.15), not lime.
+inline const Vec3f kCanopyScatter(0.024f, 0.033f, 0.018f);
 
 /// The sky and ground light a rough surface mirrors, by the mirrored direction's z only: the
 /// ambient fit's irradiance / π straight up, level and straight down, blended linearly in z and
