@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "render/foliage_aa_lanes.hpp"
+
 namespace silva::render {
 
 namespace {
@@ -81,7 +83,18 @@ void MaskBlendRows::blend(int v, Vec3f* out) {
              : RowView{};
   };
   const std::array<RowView, 3> rows{view(above, -1), view(&centre, 0), view(below, 1)};
+  size_t lanes_from = w, lanes_to = w;  // columns the SIMD lanes blend: whole vectors inside the frame
+  if (above && below && w > 2) {
+    const auto planes_of = [&](const RowView& r, const RowPlanes& p) {
+      return BlendRowPlanes{r.rgb->data(), r.layer, r.weight, r.tone, p.near.data()};
+    };
+    const std::array<BlendRowPlanes, 3> lane_rows{planes_of(rows[0], *above), planes_of(rows[1], centre),
+                                                  planes_of(rows[2], *below)};
+    lanes_from = 1;
+    lanes_to = size_t(blend_inside_lanes(lane_rows.data(), 1, int(w) - 1, out[1].data()));
+  }
   for (size_t u = 0; u < w; ++u) {
+    if (u == lanes_from) u = lanes_to;  // lanes_to < w: the last column is always blended here
     const bool near = centre.near[u] != 0 || (above && above->near[u] != 0) || (below && below->near[u] != 0);
     if (!near) {
       out[u] = rgb[u];
@@ -99,11 +112,11 @@ void MaskBlendRows::blend(int v, Vec3f* out) {
       b.add(rows[2], u - 1, 1.0f);
       b.add(rows[2], u + 1, 1.0f);
     } else {
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const bool inside_row = (dy < 0 && above) || dy == 0 || (dy > 0 && below);
-          if ((dx == 0 && dy == 0) || !inside_row || (dx < 0 && u == 0) || (dx > 0 && u + 1 == w)) continue;
-          b.add(rows[size_t(dy + 1)], size_t(std::ptrdiff_t(u) + dx), (dx == 0 || dy == 0) ? 2.0f : 1.0f);
+      for (size_t r = 0; r < 3; ++r)  // rows above, at and below; columns left, at and right
+        for (size_t c = 0; c < 3; ++c) {
+          const bool inside_row = (r == 0 && above) || r == 1 || (r == 2 && below);
+          if ((r == 1 && c == 1) || !inside_row || (c == 0 && u == 0) || (c == 2 && u + 1 == w)) continue;
+          b.add(rows[r], u + c - 1, (r == 1 || c == 1) ? 2.0f : 1.0f);
         }
     }
     out[u] = b.sum / b.total;

@@ -73,6 +73,19 @@ TEST(FoliageAa, ACheckerboardOfLeafAndBackgroundBlendsToKnownMixes) {
   EXPECT_FLOAT_EQ(frame.rgb[0].x(), 5.0f / 9.0f);
 }
 
+TEST(FoliageAa, KnownMixesHoldAlongAWideRow) {
+  // Wide enough for the SIMD lanes of every target: every inside pixel has the 5 x 5 board's mixes.
+  LinearFrame frame;
+  const GBuffer g = checkerboard(41, 8.0f, frame);
+  blend_frame(g, 0.0f, frame);
+  for (int v = 1; v < 40; ++v)
+    for (int u = 1; u < 40; ++u) {
+      const Vec3f& c = frame.rgb[size_t(v) * 41 + size_t(u)];
+      EXPECT_FLOAT_EQ(c.x(), (u + v) % 2 == 0 ? 0.5f : 2.0f / 3.0f) << u << ", " << v;
+      EXPECT_FLOAT_EQ(c.x() + c.z(), 1.0f) << u << ", " << v;
+    }
+}
+
 TEST(FoliageAa, SkyGapsTakeTheLeavesColourButGiveTheLeavesNone) {
   LinearFrame frame;
   GBuffer g = checkerboard(5, 8.0f, frame);
