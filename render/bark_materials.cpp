@@ -49,12 +49,19 @@ Vec3f birch(const SurfacePoint& s) {
   return lerp(base, c, smoothstep(0.06f, 0.14f, s.uv.y() + wobble));
 }
 
-/// Beech: smooth pale grey with soft darker and greenish blotches.
+/// Beech: smooth pale grey with soft darker and greenish blotches, paler lichen patches, fine dark
+/// horizontal wrinkles, and a darker mossy foot.
 Vec3f beech(const SurfacePoint& s) {
   const Vec3f& p = s.position;
   const float blotch = fbm3(p.x() * 3.0f, p.y() * 3.0f, p.z() * 1.5f, 3, kBarkBlotch);
   Vec3f c = Vec3f(0.36f, 0.36f, 0.33f) * (0.8f + 0.35f * blotch);
-  return lerp(c, Vec3f(0.2f, 0.24f, 0.15f), 0.5f * smoothstep(0.62f, 0.8f, blotch));
+  c = lerp(c, Vec3f(0.2f, 0.24f, 0.15f), 0.5f * smoothstep(0.62f, 0.8f, blotch));
+  const float lichen = fbm3(p.x() * 6.0f, p.y() * 6.0f, p.z() * 4.0f, 2, kBarkMark + 1);
+  c = lerp(c, Vec3f(0.5f, 0.5f, 0.46f), 0.7f * smoothstep(0.64f, 0.72f, lichen));
+  const float wrinkle = value_noise3(p.x() * 5.0f, p.y() * 5.0f, p.z() * 60.0f, kBarkMark + 2);
+  c *= 1.0f - 0.3f * smoothstep(0.82f, 0.88f, wrinkle);
+  const float wobble = 0.01f * (fbm3(p.x() * 2.0f, p.y() * 2.0f, p.z() * 0.6f, 2, kBarkBlotch + 1) - 0.5f);
+  return lerp(c, Vec3f(0.12f, 0.13f, 0.08f), 0.8f * (1.0f - smoothstep(0.01f, 0.035f, s.uv.y() + wobble)));
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ enum NoiseSalt : uint32_t {
   // Species barks (render/bark_materials.cpp).
   kBarkFurrow = 0x700,       ///< Furrows.
   kBarkPlate = 0x720,        ///< Plates and flakes.
-  kBarkMark = 0x740,         ///< Birch marks.
+  kBarkMark = 0x740,         ///< Birch marks; beech lichen (+1) and wrinkles (+2).
   kBarkBlotch = 0x760,       ///< Blotches.
   // Rocks, logs, moss and litter (render/ground_object_materials.cpp).
   kRockGrain = 0x900,        ///< Rock grain.
