@@ -14,14 +14,6 @@ float tone_weight(const Vec3f& c, float exposure) {
   return 1.0f / (1.0f + exposure * (0.2126f * c.x() + 0.7152f * c.y() + 0.0722f * c.z()));
 }
 
-/// One row of the frame with its blend inputs.
-struct RowView {
-  const Vec3f* rgb;
-  const float* layer;
-  const float* weight;
-  const float* tone;
-};
-
 /// Running sum of one pixel's blend: the centre pixel's layer depth dp and blend weight wp, and the weighted sums.
 struct PixelBlend {
   float dp, wp;
@@ -29,12 +21,12 @@ struct PixelBlend {
   float total;
 
   /// Adds neighbour x of row r with tent weight `tent`.
-  void add(const RowView& r, size_t x, float tent) {
+  void add(const BlendRowPlanes& r, size_t x, float tent) {
     const float dq = r.layer[x];
     const float behind = dq < std::numeric_limits<float>::infinity() && dq >= dp * (1.0f - kLayerTolerance) ? wp : 0.0f;
     const float in_front = dq <= dp * (1.0f + kLayerTolerance) ? r.weight[x] : 0.0f;
     const float w = tent * std::max(behind, in_front) * r.tone[x];
-    sum += r.rgb[x] * w;
+    sum += Eigen::Map<const Vec3f>(r.rgb + 3 * x) * w;
     total += w;
   }
 };
@@ -78,20 +70,16 @@ void MaskBlendRows::blend(int v, Vec3f* out) {
   const RowPlanes& centre = planes(v);
   const RowPlanes* above = v > 0 ? &planes(v - 1) : nullptr;
   const RowPlanes* below = v + 1 < g_.height ? &planes(v + 1) : nullptr;
-  const auto view = [&](const RowPlanes* p, int dy) {
-    return p ? RowView{rgb + std::ptrdiff_t(dy) * std::ptrdiff_t(w), p->layer.data(), p->weight.data(), p->tone.data()}
-             : RowView{};
+  const auto row_of = [&](const RowPlanes* p, int dy) {
+    return p ? BlendRowPlanes{(rgb + std::ptrdiff_t(dy) * std::ptrdiff_t(w))->data(), p->layer.data(), p->weight.data(),
+                              p->tone.data(), p->near.data()}
+             : BlendRowPlanes{};
   };
-  const std::array<RowView, 3> rows{view(above, -1), view(&centre, 0), view(below, 1)};
+  const std::array<BlendRowPlanes, 3> rows{row_of(above, -1), row_of(&centre, 0), row_of(below, 1)};
   size_t lanes_from = w, lanes_to = w;  // columns the SIMD lanes blend: whole vectors inside the frame
   if (above && below && w > 2) {
-    const auto planes_of = [&](const RowView& r, const RowPlanes& p) {
-      return BlendRowPlanes{r.rgb->data(), r.layer, r.weight, r.tone, p.near.data()};
-    };
-    const std::array<BlendRowPlanes, 3> lane_rows{planes_of(rows[0], *above), planes_of(rows[1], centre),
-                                                  planes_of(rows[2], *below)};
     lanes_from = 1;
-    lanes_to = size_t(blend_inside_lanes(lane_rows.data(), 1, int(w) - 1, out[1].data()));
+    lanes_to = size_t(blend_inside_lanes(rows.data(), 1, int(w) - 1, out[1].data()));
   }
   for (size_t u = 0; u < w; ++u) {
     if (u == lanes_from) u = lanes_to;  // lanes_to < w: the last column is always blended here
