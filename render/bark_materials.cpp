@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/noise_salts.hpp"
+#include "core/cellular_noise.hpp"
 #include "core/value_noise.hpp"
+#include "render/noise_salts.hpp"
 
 namespace silva::render {
 
@@ -14,26 +15,98 @@ float smoothstep(float e0, float e1, float x) { return smooth_weight(std::clamp(
 
 Vec3f lerp(const Vec3f& a, const Vec3f& b, float t) { return a + (b - a) * t; }
 
-/// Depth of vertical furrows in [0, 1] (1 = deep in a furrow): ridged noise stretched along z.
-float furrows(const Vec3f& p, float across, float along) {
-  const float n = fbm3(p.x() * across, p.y() * across, p.z() * along, 3, kBarkFurrow);
-  return 1.0f - smoothstep(0.0f, 0.35f, std::abs(n - 0.5f) * 2.0f);
+/// A plated bark: cells of cellular noise stretched along the trunk, separated by fissures of one
+/// width in metres whatever their direction.
+struct Plated {
+  float r, g, b;        ///< Plate colour (linear albedo).
+  float fr, fg, fb;     ///< Colour on a fissure's floor (linear albedo).
+  float across, along;  ///< Plates per metre across the trunk and along world z.
+  float width;          ///< Fissure width (m) from its floor to the plate's edge.
+  float relief;         ///< Fissure depth (m).
+  float tone;           ///< Plate-to-plate brightness variation (share).
+  float mean_fissure;   ///< The fissure depth's average over a trunk (measured): what a pixel spanning many plates sees.
+};
+
+constexpr Plated kSpruceScales{0.2f, 0.11f, 0.075f, 0.09f, 0.045f, 0.03f, 14.0f, 8.0f, 0.006f, 0.005f, 0.3f, 0.16f};
+constexpr Plated kPinePlates{0.17f, 0.135f, 0.1f, 0.05f, 0.03f, 0.02f, 9.0f, 2.0f, 0.02f, 0.03f, 0.3f, 0.37f};
+constexpr Plated kLarchPlates{0.27f, 0.15f, 0.1f, 0.12f, 0.04f, 0.025f, 7.0f, 2.2f, 0.018f, 0.02f, 0.25f, 0.27f};
+constexpr Plated kOakRidges{0.16f, 0.15f, 0.13f, 0.05f, 0.045f, 0.04f, 6.0f, 0.8f, 0.02f, 0.03f, 0.2f, 0.23f};
+constexpr Plated kBirchBase{0.18f, 0.16f, 0.14f, 0.04f, 0.035f, 0.03f, 8.0f, 1.8f, 0.015f, 0.015f, 0.2f, 0.26f};
+
+/// Where the plate pattern is drawn in detail: 1 while a pixel spans less than half a fissure's
+/// width, 0 from two widths (there the bark shows its average).
+float plate_detail(const Plated& b, float footprint) { return 1.0f - smoothstep(0.5f * b.width, 2.0f * b.width, footprint); }
+
+/// A point's plate: its distance from the nearest fissure's floor, that distance's gradient and the
+/// plate's id.
+struct PlateSample {
+  float metres;          ///< Distance from the nearest fissure's floor (m) over that fissure's own opening.
+  Vec3f towards_plate;   ///< Unit gradient of `metres` (world axes).
+  uint32_t plate;        ///< Id of the plate (its cell's hash).
+  /// Fissure depth in [0, 1]: 1 on the floor, 0 from `width` away.
+  float fissure(float width) const { return 1.0f - smoothstep(0.0f, width, metres); }
+};
+
+/// The plate at p: the gap between the nearest two cells' distances, turned into metres by its own
+/// gradient, so fissures keep their width across and along the trunk. The cells are warped by value
+/// noise so plate edges wander instead of running straight.
+PlateSample plate_at(const Vec3f& p, const Plated& b) {
+  const float f = 0.7f * b.across, warp = 0.35f;
+  const float x = p.x() * b.across + warp * (value_noise3(p.x() * f, p.y() * f, p.z() * f, kBarkFurrow + 1) - 0.5f);
+  const float y = p.y() * b.across + warp * (value_noise3(p.x() * f, p.y() * f, p.z() * f, kBarkFurrow + 2) - 0.5f);
+  const float z = p.z() * b.along + warp * (value_noise3(p.x() * f, p.y() * f, p.z() * f, kBarkFurrow + 3) - 0.5f);
+  const CellularSample c = cellular3(x, y, z, kBarkFurrow);
+  const Vec3f gradient(c.gap_dx * b.across, c.gap_dy * b.across, c.gap_dz * b.along);
+  const float steepness = gradient.norm();
+  if (steepness <= 0.0f) return {0.0f, Vec3f::Zero(), c.nearest_cell};
+  const Vec3f towards = gradient / steepness;
+  // Fissures along the trunk open wide; cracks across it (leaving the fissure vertically) stay narrow;
+  // and each fissure widens and narrows along its way (0.4 to 1.6 of its width).
+  const float across_share = 1.0f - towards.z() * towards.z();
+  const float g = 1.3f * b.across;
+  const float opening = 0.4f + 1.2f * value_noise3(p.x() * g, p.y() * g, p.z() * g, kBarkFurrow + 4);
+  return {(c.f2 - c.f1) / steepness / ((0.35f + 0.65f * across_share) * opening), towards, c.nearest_cell};
 }
 
-/// Furrowed bark: ridges of `ridge` colour, furrows `depth` darker, fine grain.
-Vec3f furrowed(const Vec3f& p, const Vec3f& ridge, float depth, float across, float along) {
+/// Albedo of plated bark: plates of its colour, each a little lighter or darker, fissures of theirs,
+/// fine grain; the average look where a pixel spans many plates.
+Vec3f plated(const SurfacePoint& s, const Plated& b) {
+  const Vec3f& p = s.position;
   const float grain = value_noise3(p.x() * 40.0f, p.y() * 40.0f, p.z() * 12.0f, kBarkPlate);
-  return ridge * (1.0f - depth * furrows(p, across, along)) * (0.85f + 0.3f * grain);
+  float fissure = b.mean_fissure, tone = 1.0f;
+  const float detail = plate_detail(b, s.footprint);
+  if (detail > 0.0f) {
+    const PlateSample plate = plate_at(p, b);
+    fissure += (plate.fissure(b.width) - b.mean_fissure) * detail;
+    // Flaking patches and fine grooves along the trunk on each plate's face.
+    const float flakes = value_noise3(p.x() * 25.0f, p.y() * 25.0f, p.z() * 8.0f, kBarkPlate + 2);
+    const float grooves = value_noise3(p.x() * 70.0f, p.y() * 70.0f, p.z() * 3.0f, kBarkPlate + 3);
+    tone += (b.tone * (lattice_value(plate.plate) - 0.5f) + 0.5f * (flakes - 0.5f) + 0.4f * (grooves - 0.5f)) * detail;
+  }
+  return lerp(Vec3f(b.r, b.g, b.b) * tone, Vec3f(b.fr, b.fg, b.fb), fissure) * (0.85f + 0.3f * grain);
+}
+
+/// Share of a pine's bark that is the thin orange upper bark (0 low on the trunk, 1 from about 50 %).
+float pine_upper_share(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float wobble = 0.12f * (fbm3(p.x() * 1.5f, p.y() * 1.5f, p.z() * 0.5f, 2, kBarkBlotch) - 0.5f);
+  return smoothstep(0.3f, 0.5f, s.uv.y() + wobble);
+}
+
+/// Share of a birch's bark that is white (0 on the dark fissured base, 1 from about 14 % of the height).
+float birch_white_share(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float wobble = 0.06f * (fbm3(p.x() * 2.0f, p.y() * 2.0f, p.z() * 0.6f, 2, kBarkBlotch + 1) - 0.5f);
+  return smoothstep(0.06f, 0.14f, s.uv.y() + wobble);
 }
 
 /// Scots pine: grey-brown furrowed plates low, thin orange flakes from about 40 % of the height.
 Vec3f pine(const SurfacePoint& s) {
   const Vec3f& p = s.position;
-  const Vec3f low = furrowed(p, Vec3f(0.2f, 0.15f, 0.11f), 0.7f, 7.0f, 0.9f);
   const float flake = value_noise3(p.x() * 18.0f, p.y() * 18.0f, p.z() * 6.0f, kBarkPlate + 1);
   const Vec3f high = Vec3f(0.46f, 0.2f, 0.07f) * (0.75f + 0.35f * flake);
-  const float wobble = 0.12f * (fbm3(p.x() * 1.5f, p.y() * 1.5f, p.z() * 0.5f, 2, kBarkBlotch) - 0.5f);
-  return lerp(low, high, smoothstep(0.3f, 0.5f, s.uv.y() + wobble));
+  const float upper = pine_upper_share(s);
+  return upper >= 1.0f ? high : lerp(plated(s, kPinePlates), high, upper);
 }
 
 /// Silver birch: white with dark horizontal lenticels and black patches, dark fissured base.
@@ -44,9 +117,8 @@ Vec3f birch(const SurfacePoint& s) {
   c = lerp(c, Vec3f(0.06f, 0.055f, 0.05f), smoothstep(0.78f, 0.84f, dash));
   const float patch = fbm3(p.x() * 2.5f, p.y() * 2.5f, p.z() * 1.2f, 3, kBarkBlotch);
   c = lerp(c, Vec3f(0.05f, 0.045f, 0.04f), smoothstep(0.68f, 0.74f, patch));
-  const Vec3f base = furrowed(p, Vec3f(0.16f, 0.14f, 0.12f), 0.75f, 9.0f, 1.2f);
-  const float wobble = 0.06f * (fbm3(p.x() * 2.0f, p.y() * 2.0f, p.z() * 0.6f, 2, kBarkBlotch + 1) - 0.5f);
-  return lerp(base, c, smoothstep(0.06f, 0.14f, s.uv.y() + wobble));
+  const float white = birch_white_share(s);
+  return white >= 1.0f ? c : lerp(plated(s, kBirchBase), c, white);
 }
 
 /// Beech: smooth pale grey with soft darker and greenish blotches, paler lichen patches, fine dark
@@ -67,16 +139,36 @@ Vec3f beech(const SurfacePoint& s) {
 }  // namespace
 
 Vec3f species_bark_albedo(const SurfacePoint& s) {
-  const Vec3f& p = s.position;
   switch (s.material) {
-    case Material::BarkSpruce: return furrowed(p, Vec3f(0.2f, 0.11f, 0.075f), 0.35f, 22.0f, 8.0f);
+    case Material::BarkSpruce: return plated(s, kSpruceScales);
     case Material::BarkPine: return pine(s);
-    case Material::BarkLarch: return furrowed(p, Vec3f(0.25f, 0.12f, 0.08f), 0.6f, 8.0f, 1.0f);
+    case Material::BarkLarch: return plated(s, kLarchPlates);
     case Material::BarkBeech: return beech(s);
     case Material::BarkBirch: return birch(s);
-    case Material::BarkOak: return furrowed(p, Vec3f(0.2f, 0.18f, 0.15f), 0.75f, 8.0f, 1.0f);
+    case Material::BarkOak: return plated(s, kOakRidges);
     default: return Vec3f(0.5f, 0.0f, 0.5f);
   }
+}
+
+Vec3f species_bark_slope(const SurfacePoint& s, float footprint) {
+  const Plated* b = nullptr;
+  float share = 1.0f;
+  switch (s.material) {
+    case Material::BarkSpruce: b = &kSpruceScales; break;
+    case Material::BarkPine: b = &kPinePlates, share = 1.0f - pine_upper_share(s); break;
+    case Material::BarkLarch: b = &kLarchPlates; break;
+    case Material::BarkOak: b = &kOakRidges; break;
+    case Material::BarkBirch: b = &kBirchBase, share = 1.0f - birch_white_share(s); break;
+    default: return Vec3f::Zero();
+  }
+  const float depth = b->relief * share * plate_detail(*b, footprint);
+  if (depth <= 0.0f) return Vec3f::Zero();
+  const PlateSample plate = plate_at(s.position, *b);
+  const float t = plate.metres / b->width;
+  if (t >= 1.0f) return Vec3f::Zero();  // on a plate's flat top
+  // The height depth * (smoothstep(0, width, d) - 1) rises out of the fissure along d's gradient.
+  const float rise = std::min(depth * 6.0f * t * (1.0f - t) / b->width, kMaxBarkSlope);
+  return plate.towards_plate * rise;
 }
 
 }  // namespace silva::render

@@ -199,11 +199,17 @@ Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
   const Relief r = relief(s.material);
   if (r.height <= 0.0f) return s.normal;
   const float fade = 1.0f - smoothstep(0.15f, 0.4f, footprint * std::max({r.fx, r.fy, r.fz}));
-  if (fade <= 0.0f) return s.normal;
-  const Vec3f& p = s.position;
-  const NoiseGradient g = value_noise3_gradient(p.x() * r.fx, p.y() * r.fy, p.z() * r.fz, r.salt);
-  const float h = r.height * fade;
-  return bumped_normal(s.normal, Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h));
+  Vec3f slope = Vec3f::Zero();
+  if (fade > 0.0f) {
+    const Vec3f& p = s.position;
+    const NoiseGradient g = value_noise3_gradient(p.x() * r.fx, p.y() * r.fy, p.z() * r.fz, r.salt);
+    const float h = r.height * fade;
+    slope = Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h);
+  }
+  const Vec3f furrows = species_bark_slope(s, footprint);
+  if (furrows != Vec3f::Zero()) slope += furrows;
+  else if (fade <= 0.0f) return s.normal;
+  return bumped_normal(s.normal, slope);
 }
 
 float fallen_leaf_cover(Season season) { return season == Season::Autumn ? 0.8f : 0.0f; }
