@@ -14,15 +14,17 @@ BenchView bench_view(int64_t id) {
     const ForestScene& w = forest_scene();
     return {&w.scene, false, {&w.scene, &w.camera}, w.triangle_count()};
   }
-  if (id == 1) {
+  if (id == 1 || id == 2) {
     const DefaultView& v = default_view();
-    return {&v.frame.scene, true, {&v.drawn, &v.camera}, v.triangle_count()};
+    const FrozenView& f = id == 1 ? v.drawn : v.full_detail;
+    return {&v.frame.scene, id == 1, {&f.scene, &v.camera}, f.triangle_count()};
   }
-  throw std::out_of_range("bench view " + std::to_string(id) + " does not exist (0: stress forest, 1: default view)");
+  throw std::out_of_range("bench view " + std::to_string(id) +
+                          " does not exist (0: stress forest, 1: default view, 2: default view at full detail)");
 }
 
 void views_and_threads(benchmark::internal::Benchmark* b) {
-  b->ArgsProduct({{0, 1}, {1, 2}})->ArgNames({"view", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+  b->ArgsProduct({{0, 1, 2}, {1, 2}})->ArgNames({"view", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 }
 
 }  // namespace silva::bench

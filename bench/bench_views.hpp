@@ -1,7 +1,8 @@
 #pragma once
 /// @file The views the rasteriser benches draw, by number (the benchmarks' `view` argument):
 /// 0 = the synthetic stress forest (bench/forest_scene.hpp, render.lod = false),
-/// 1 = the product's default forest view (bench/default_view.hpp, LODs on).
+/// 1 = the product's default forest view (bench/default_view.hpp, LODs on),
+/// 2 = the same view at full detail (render.lod = false).
 #include <cstddef>
 #include <cstdint>
 
@@ -26,10 +27,10 @@ struct BenchView {
   }
 };
 
-/// View `id` (0 or 1; anything else throws std::out_of_range), built on first use.
+/// View `id` (0, 1 or 2; anything else throws std::out_of_range), built on first use.
 BenchView bench_view(int64_t id);
 
-/// Google Benchmark registration shared by the view benches: arguments (view 0/1, threads 1/2),
+/// Google Benchmark registration shared by the view benches: arguments (view 0/1/2, threads 1/2),
 /// milliseconds, wall time, at least 2 s each.
 void views_and_threads(benchmark::internal::Benchmark* b);
 

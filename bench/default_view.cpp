@@ -18,10 +18,11 @@ namespace {
 /// Seed of the default view's world (the demo's seed).
 constexpr int64_t kSeed = 1234567890;
 
-/// A scene of the instances `lods` draws, each pointing at a single-LOD copy of its mesh entry
-/// (one entry per distinct (mesh, LOD) pair); `from` receives each drawn instance's index in `full`.
-render::Scene freeze_lods(const render::Scene& full, std::span<const uint32_t> lods, std::vector<uint32_t>& from) {
-  render::Scene out;
+/// The instances `lods` draws of `full`, each pointing at a single-LOD copy of its mesh entry (one
+/// entry per distinct (mesh, LOD) pair).
+FrozenView freeze_lods(const render::Scene& full, std::span<const uint32_t> lods) {
+  FrozenView frozen;
+  render::Scene& out = frozen.scene;
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> mesh_of;
   for (uint32_t i = 0; i < full.instances.size(); ++i) {
     if (lods[i] == render::kCulled) continue;
@@ -37,9 +38,9 @@ render::Scene freeze_lods(const render::Scene& full, std::span<const uint32_t> l
     }
     inst.mesh = it->second;
     out.instances.push_back(inst);
-    from.push_back(i);
+    frozen.from.push_back(i);
   }
-  return out;
+  return frozen;
 }
 
 }  // namespace
@@ -57,12 +58,16 @@ DefaultView::DefaultView() : library(std::make_unique<assets::AssetLibrary>(asse
                                                 camera.position(), cfg.render.ground_cover_distance);
   render::Renderer renderer;
   renderer.render_visibility(frame.scene, camera, render::RenderOptions{});
-  drawn = freeze_lods(frame.scene, renderer.instance_lods(), drawn_from);
+  drawn = freeze_lods(frame.scene, renderer.instance_lods());
+  render::RenderOptions no_lod;
+  no_lod.lod = false;
+  renderer.render_visibility(frame.scene, camera, no_lod);
+  full_detail = freeze_lods(frame.scene, renderer.instance_lods());
 }
 
-size_t DefaultView::triangle_count() const {
+size_t FrozenView::triangle_count() const {
   size_t n = 0;
-  for (const render::Instance& inst : drawn.instances) n += drawn.meshes[inst.mesh].lods[0]->indices.size() / 3;
+  for (const render::Instance& inst : scene.instances) n += scene.meshes[inst.mesh].lods[0]->indices.size() / 3;
   return n;
 }
 

@@ -1,10 +1,12 @@
 // Peers benchmark: Silva's visibility pass against Mesa llvmpipe (OpenGL on the CPU) and Embree 3
 // (one primary ray per pixel) on the same triangles and camera, alpha-tested leaf cards honoured,
-// for two views at 1920x1080 (benchmark argument `view`):
+// for three views at 1920x1080 (benchmark argument `view`):
 //   view 0: the synthetic stress forest of bench/forest_scene.hpp (1.08 M triangles, render.lod = false);
 //   view 1: the product's default forest view of bench/default_view.hpp (default world, middle
 //           autopilot pose, LODs on: Silva selects them; the peers are given the instances Silva
-//           draws at the LODs it drew, so their culling and LOD work is done for them).
+//           draws at the LODs it drew, so their culling and LOD work is done for them);
+//   view 2: the same view at full detail (render.lod = false; the peers get every instance Silva
+//           draws, at LOD 0).
 // Every peer produces per-pixel depth + instance + triangle; after timing, its last frame is
 // compared with Silva's and the run fails (error in the report) when fewer than 99% of the pixels
 // have the same instance or fewer than 99% of the pixels both hit have depth within 0.1%.
@@ -48,20 +50,23 @@ void report(benchmark::State& state, const BenchView& v, double setup_ms, double
 }
 
 #if defined(SILVA_PEER_EMBREE) || defined(SILVA_PEER_LLVMPIPE)
-/// Silva's visibility of the peers' scene of view 1 (drawn with render.lod = false), after checking
-/// that it is Silva's own LOD-on frame of the full scene with the instances renumbered.
-PeerFrame default_view_reference() {
+/// Silva's visibility of the peers' scene of view 1 (`lod`) or 2, drawn with render.lod = false,
+/// after checking that it is Silva's own frame of the full scene with the instances renumbered.
+PeerFrame default_view_reference(bool lod) {
   const DefaultView& v = default_view();
+  const FrozenView& f = lod ? v.drawn : v.full_detail;
   render::Renderer r;
-  PeerFrame full = from_visibility(r.render_visibility(v.frame.scene, v.camera, render::RenderOptions{}));
   render::RenderOptions frozen;
   frozen.lod = false;
-  PeerFrame drawn = from_visibility(r.render_visibility(v.drawn, v.camera, frozen));
+  render::RenderOptions own = frozen;
+  own.lod = lod;
+  PeerFrame full = from_visibility(r.render_visibility(v.frame.scene, v.camera, own));
+  PeerFrame drawn = from_visibility(r.render_visibility(f.scene, v.camera, frozen));
   for (size_t i = 0; i < drawn.instance.size(); ++i) {
     const uint32_t inst = drawn.instance[i];
-    const uint32_t renumbered = inst == render::kNoInstance ? inst : v.drawn_from[inst];
+    const uint32_t renumbered = inst == render::kNoInstance ? inst : f.from[inst];
     if (renumbered != full.instance[i] || drawn.triangle[i] != full.triangle[i] || drawn.depth[i] != full.depth[i])
-      throw std::runtime_error("default view: the frozen-LOD scene does not reproduce Silva's frame at pixel " +
+      throw std::runtime_error("default view: the frozen scene does not reproduce Silva's frame at pixel " +
                                std::to_string(i));
   }
   return drawn;
@@ -75,8 +80,12 @@ const PeerFrame& silva_reference(int64_t view) {
     return from_visibility(r.render_visibility(*v.silva_scene, *v.peers.camera, v.options()));
   }();
   if (view == 0) return forest;
-  static const PeerFrame world = default_view_reference();
-  return world;
+  if (view == 1) {
+    static const PeerFrame world = default_view_reference(true);
+    return world;
+  }
+  static const PeerFrame full_detail = default_view_reference(false);
+  return full_detail;
 }
 
 /// Compares a peer's frame with Silva's; reports the agreement and fails the run below the bar.

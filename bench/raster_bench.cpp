@@ -152,6 +152,6 @@ void BM_OcclusionBound(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_OcclusionBound)->ArgsProduct({{0, 1}, {32, 128, 1024}})->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OcclusionBound)->ArgsProduct({{0, 1, 2}, {32, 128, 1024}})->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RasterVisibility)->Apply(bench::views_and_threads);
 BENCHMARK(BM_RasterVisibilityResolve)->Apply(bench::views_and_threads);
