@@ -21,43 +21,53 @@ float band_cover(float x, float w, float half_f, float inv_f) {
 /// One sprite's shape, colour and tilt, drawn from its cell's two hashes.
 struct Sprite {
   float half_length, half_width_at_middle, tilt, curl, keep;
-  bool leaf, taper;  ///< A leaf (midrib, curl); narrowing to pointed ends (leaves and blades).
+  bool leaf, cone, taper;  ///< A leaf (midrib, curl); a cone (seams, round); narrowing to pointed ends.
   Vec3f colour;
 };
 
-/// The kinds' constants: leaf, blade, needle, twig.
+/// The kinds' constants: leaf, blade, needle, twig, cone.
 struct KindTable {
   const float* leaf;
   const float* blade;
   const float* needle;
   const float* twig;
+  const float* cone;
 };
+
+/// Distance (metres) from q pitches along to the nearest seam (a whole number of pitches).
+float seam_distance(float q) { return std::abs(q - std::floor(q + 0.5f)) * kLitterConePitch; }
 
 /// The sprite of cell hashes h1, h2 over a floor of `m`.
 Sprite sprite_of(uint32_t h1, uint32_t h2, const LitterMix& m) {
   const float size = byte_value(h2, 0), hue = byte_value(h2, 8), kind = byte_value(h2, 16), pick = byte_value(h2, 24);
   const float untwigged = 1.0f - kLitterTwigShare;
   const bool twig = kind >= untwigged;
-  const bool blade = !twig && kind < m.grass * untwigged;
-  const bool needle = !twig && !blade && kind < (m.grass + m.needles * (1.0f - m.grass)) * untwigged;
+  const bool cone = !twig && kind >= untwigged - kLitterConeShare * m.needles;
+  const bool blade = !twig && !cone && kind < m.grass * untwigged;
+  const bool needle = !twig && !cone && !blade && kind < (m.grass + m.needles * (1.0f - m.grass)) * untwigged;
   Sprite s{};
-  s.leaf = !twig && !blade && !needle;
-  s.taper = s.leaf || blade;
+  s.leaf = !twig && !cone && !blade && !needle;
+  s.cone = cone;
+  s.taper = s.leaf || blade || cone;
   s.keep = pick < kLitterDensity ? 1.0f : 0.0f;
   s.tilt = (byte_value(h1 ^ h2, 4) * 2.0f - 1.0f) * kLitterTilt;
   s.curl = s.leaf ? kLitterCurl : 0.0f;
-  const auto of = [&](const KindTable& t) { return s.leaf ? t.leaf : blade ? t.blade : needle ? t.needle : t.twig; };
-  const float* half = of({kLitterLeafHalf, kLitterBladeHalf, kLitterNeedleHalf, kLitterTwigHalf});
+  const auto of = [&](const KindTable& t) {
+    return s.leaf ? t.leaf : cone ? t.cone : blade ? t.blade : needle ? t.needle : t.twig;
+  };
+  const float* half = of({kLitterLeafHalf, kLitterBladeHalf, kLitterNeedleHalf, kLitterTwigHalf, kLitterConeHalf});
   s.half_length = half[0] + half[1] * size;
   const float width = kLitterLeafWidth[0] + kLitterLeafWidth[1] * byte_value(h1 ^ h2, 12);
   s.half_width_at_middle = s.leaf   ? width * s.half_length
+                           : cone   ? kLitterConeWidth * s.half_length
                            : blade  ? kLitterBladeHalfWidth[0] + kLitterBladeHalfWidth[1] * hue
                            : needle ? kLitterNeedleHalfWidth
                                     : kLitterTwigHalfWidth[0] + kLitterTwigHalfWidth[1] * hue;
   const bool is_fresh = s.leaf && pick < kLitterDensity * m.fresh;
-  const float* dark = is_fresh ? kGroundFallenOrange : of({kLitterLeafDark, kLitterBladeDark, kLitterNeedleDark, kLitterTwigDark});
-  const float* light =
-      is_fresh ? kGroundFallenYellow : of({kLitterLeafLight, kLitterBladeLight, kLitterNeedleLight, kLitterTwigLight});
+  const float* dark = is_fresh ? kGroundFallenOrange
+                               : of({kLitterLeafDark, kLitterBladeDark, kLitterNeedleDark, kLitterTwigDark, kLitterConeDark});
+  const float* light = is_fresh ? kGroundFallenYellow
+                                : of({kLitterLeafLight, kLitterBladeLight, kLitterNeedleLight, kLitterTwigLight, kLitterConeLight});
   for (int k = 0; k < 3; ++k) s.colour[k] = mix(dark[k], light[k], hue);
   return s;
 }
@@ -79,11 +89,18 @@ void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, 
                        band_cover(u, s.half_length + kLitterShadowWidth, half_f, inv_f) * presence;
   const float rib =
       s.leaf ? band_cover(v, kLitterRibHalfWidth, half_f, inv_f) * band_cover(u, 0.9f * s.half_length, half_f, inv_f) : 0.0f;
+  // A cone's scales: two sets of diagonal seams, the darker of them.
+  const float seam =
+      s.cone ? std::max(band_cover(seam_distance((u + across) * (1.0f / kLitterConePitch)), kLitterConeSeamHalfWidth, half_f, inv_f),
+                        band_cover(seam_distance((u - across) * (1.0f / kLitterConePitch)), kLitterConeSeamHalfWidth, half_f, inv_f))
+             : 0.0f;
   for (int k = 0; k < 3; ++k) {
     const float under = c[k] * (1.0f - kLitterShadow * shadow);
-    c[k] = mix(under, s.colour[k] * (1.0f - kLitterRib * rib), cover);
+    c[k] = mix(under, s.colour[k] * (1.0f - kLitterRib * rib) * (1.0f - kLitterConeSeam * seam), cover);
   }
-  const float side = std::copysign(s.curl, across);  // each half of a curled leaf slopes away from the midrib
+  // Each half of a curled leaf slopes away from the midrib; a cone's flank steepens towards its outline.
+  const float side = s.cone ? kLitterConeRound * std::clamp(across / std::max(half_width, 1e-6f), -1.0f, 1.0f)
+                            : std::copysign(s.curl, across);
   slope = Vec2f(mix(slope.x(), ux * s.tilt - uy * side, cover), mix(slope.y(), uy * s.tilt + ux * side, cover));
 }
 

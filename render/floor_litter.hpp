@@ -1,5 +1,5 @@
 #pragma once
-/// @file Single leaves, needles and twigs lying on the forest floor near the camera: procedural
+/// @file Single leaves, needles, twigs and cones lying on the forest floor near the camera: procedural
 /// sprites on a jittered grid, composited over the floor's colour and relief with antialiased edges
 /// (each sprite's coverage of the pixel's box footprint) and a thin contact shadow around each.
 /// Faded out where one pixel covers more than a couple of centimetres, where ground_albedo_row's
@@ -22,6 +22,8 @@ inline constexpr float kLitterDensity = 0.95f;
 /// Share of sprites that are twigs (the rest grass blades, needles or leaves, by the floor's grass
 /// cover and needle share).
 inline constexpr float kLitterTwigShare = 0.05f;
+/// Share of sprites that are cones under an all-conifer stand (in proportion to the needle share).
+inline constexpr float kLitterConeShare = 0.02f;
 /// Width (metres) of the contact shadow around each sprite, and how much it darkens the floor.
 inline constexpr float kLitterShadowWidth = 0.004f;
 /// How far beyond a sprite's half length and half width its shadow and a pixel's filter can reach it
@@ -31,7 +33,7 @@ inline constexpr float kLitterShadow = 0.25f;  ///< Darkening at the sprite's ed
 /// How far a midrib darkens its leaf, and its half width (metres).
 inline constexpr float kLitterRib = 0.3f;
 inline constexpr float kLitterRibHalfWidth = 0.0005f;
-/// Largest slope (metres per metre) a sprite lies at: leaves rest on each other.
+/// Largest slope (metres per metre) a sprite lies at along its length: leaves rest on each other.
 inline constexpr float kLitterTilt = 0.35f;
 /// Slope of each half of a leaf away from its midrib: leaves curl, one half towards the light.
 inline constexpr float kLitterCurl = 0.3f;
@@ -51,6 +53,15 @@ inline constexpr float kLitterTwigHalf[2] = {0.028f, 0.014f};    ///< Twigs 5.6 
 inline constexpr float kLitterBladeHalf[2] = {0.015f, 0.025f};   ///< Grass blades 3 – 8 cm long, lying or bent over,
 inline constexpr float kLitterBladeHalfWidth[2] = {0.0008f, 0.0008f};  ///< 1.6 – 3.2 mm wide, pointed.
 inline constexpr float kLitterTwigHalfWidth[2] = {0.0012f, 0.0018f};  ///< Twigs 2.4 – 6 mm thick.
+inline constexpr float kLitterConeHalf[2] = {0.02f, 0.015f};  ///< Cones 4 – 7 cm long (pine and larch; young spruce),
+inline constexpr float kLitterConeWidth = 0.45f;             ///< their half width / half length at the middle.
+/// Slope of a cone's flank at its outline (its round body lit on one side, as a curled leaf's halves).
+inline constexpr float kLitterConeRound = 0.8f;
+/// Spacing (metres) of the two sets of diagonal seams between a cone's scales, their half width, and
+/// how much they darken it.
+inline constexpr float kLitterConePitch = 0.007f;
+inline constexpr float kLitterConeSeamHalfWidth = 0.0007f;
+inline constexpr float kLitterConeSeam = 0.5f;
 /// Linear-RGB colours, dark and light end of each kind (a sprite's hue mixes them).
 inline constexpr float kLitterLeafDark[3] = {0.055f, 0.037f, 0.024f};
 inline constexpr float kLitterLeafLight[3] = {0.165f, 0.113f, 0.066f};
@@ -60,6 +71,8 @@ inline constexpr float kLitterBladeDark[3] = {0.03f, 0.048f, 0.012f};
 inline constexpr float kLitterBladeLight[3] = {0.11f, 0.13f, 0.04f};
 inline constexpr float kLitterTwigDark[3] = {0.04f, 0.033f, 0.027f};
 inline constexpr float kLitterTwigLight[3] = {0.12f, 0.1f, 0.085f};
+inline constexpr float kLitterConeDark[3] = {0.05f, 0.03f, 0.018f};
+inline constexpr float kLitterConeLight[3] = {0.19f, 0.11f, 0.055f};
 
 /// How much the sprites show where one pixel covers `footprint` metres: 1 up to kLitterFadeNear,
 /// 0 from kLitterFadeFar.
@@ -68,7 +81,7 @@ float litter_fade(float footprint);
 /// What the sprites at a floor point are made of.
 struct LitterMix {
   float grass = 0.0f;    ///< The floor's grass cover: this share of the sprites are grass blades.
-  float needles = 0.0f;  ///< The stand's needle share (0 broadleaf … 1 conifer) of the rest.
+  float needles = 0.0f;  ///< The stand's needle share (0 broadleaf … 1 conifer) of the rest; cones follow it.
   float fresh = 0.0f;    ///< Share of the leaves that are freshly fallen (autumn colours).
 };
 

@@ -36,15 +36,23 @@ struct LitterMixLanes {
 
 /// A sprite of each lane (floor_litter.cpp's Sprite) with its kind masks.
 struct SpriteLanes {
-  hn::Mask<DF> leaf, blade, needle, taper, fresh;
+  hn::Mask<DF> leaf, cone, blade, needle, taper, fresh;
   VF half_length, middle, tilt, keep, hue;
 };
 
-/// The constant of each sprite kind on lanes: a leaf, blade, needle or twig where the masks say.
-inline VF per_kind(const SpriteLanes& s, float leaf, float blade, float needle, float twig) {
+/// The constant of each sprite kind on lanes: a leaf, cone, blade, needle or twig where the masks say.
+inline VF per_kind(const SpriteLanes& s, float leaf, float blade, float needle, float twig, float cone) {
   const DF d;
-  return hn::IfThenElse(s.leaf, hn::Set(d, leaf),
-                        hn::IfThenElse(s.blade, hn::Set(d, blade), hn::IfThenElse(s.needle, hn::Set(d, needle), hn::Set(d, twig))));
+  return hn::IfThenElse(
+      s.leaf, hn::Set(d, leaf),
+      hn::IfThenElse(s.cone, hn::Set(d, cone),
+                     hn::IfThenElse(s.blade, hn::Set(d, blade), hn::IfThenElse(s.needle, hn::Set(d, needle), hn::Set(d, twig)))));
+}
+
+/// floor_litter.cpp's seam_distance on lanes.
+inline VF seam_distance_lanes(VF q) {
+  const DF d;
+  return hn::Mul(hn::Abs(hn::Sub(q, hn::Floor(hn::Add(q, hn::Set(d, 0.5f))))), hn::Set(d, kLitterConePitch));
 }
 
 /// floor_litter.cpp's sprite_of on lanes (the colours are picked where the sprite is laid).
@@ -56,20 +64,26 @@ inline SpriteLanes sprite_lanes(VU h1, VU h2, const LitterMixLanes& m) {
   s.hue = byte_value_lanes(h2, 8);
   const VF untwigged = hn::Set(d, 1.0f - kLitterTwigShare);
   const auto twig = hn::Ge(kind, untwigged);
-  s.blade = hn::AndNot(twig, hn::Lt(kind, hn::Mul(m.grass, untwigged)));
+  s.cone = hn::AndNot(twig, hn::Ge(kind, hn::Sub(untwigged, hn::Mul(hn::Set(d, kLitterConeShare), m.needles))));
+  const auto twig_or_cone = hn::Or(twig, s.cone);
+  s.blade = hn::AndNot(twig_or_cone, hn::Lt(kind, hn::Mul(m.grass, untwigged)));
   const VF needle_bound = hn::Mul(hn::Add(m.grass, hn::Mul(m.needles, hn::Sub(one, m.grass))), untwigged);
-  s.needle = hn::AndNot(hn::Or(twig, s.blade), hn::Lt(kind, needle_bound));
-  s.leaf = hn::Not(hn::Or(hn::Or(twig, s.blade), s.needle));
-  s.taper = hn::Or(s.leaf, s.blade);
+  s.needle = hn::AndNot(hn::Or(twig_or_cone, s.blade), hn::Lt(kind, needle_bound));
+  s.leaf = hn::Not(hn::Or(hn::Or(twig_or_cone, s.blade), s.needle));
+  s.taper = hn::Or(hn::Or(s.leaf, s.blade), s.cone);
   s.keep = hn::IfThenElseZero(hn::Lt(pick, hn::Set(d, kLitterDensity)), one);
   s.tilt = hn::Mul(hn::Sub(hn::Mul(byte_value_lanes(hn::Xor(h1, h2), 4), two), one), hn::Set(d, kLitterTilt));
-  s.half_length = hn::Add(per_kind(s, kLitterLeafHalf[0], kLitterBladeHalf[0], kLitterNeedleHalf[0], kLitterTwigHalf[0]),
-                          hn::Mul(per_kind(s, kLitterLeafHalf[1], kLitterBladeHalf[1], kLitterNeedleHalf[1], kLitterTwigHalf[1]), size));
+  s.half_length =
+      hn::Add(per_kind(s, kLitterLeafHalf[0], kLitterBladeHalf[0], kLitterNeedleHalf[0], kLitterTwigHalf[0], kLitterConeHalf[0]),
+              hn::Mul(per_kind(s, kLitterLeafHalf[1], kLitterBladeHalf[1], kLitterNeedleHalf[1], kLitterTwigHalf[1], kLitterConeHalf[1]),
+                      size));
   const VF width = hn::Add(hn::Set(d, kLitterLeafWidth[0]), hn::Mul(hn::Set(d, kLitterLeafWidth[1]), byte_value_lanes(hn::Xor(h1, h2), 12)));
   const VF blade_width = hn::Add(hn::Set(d, kLitterBladeHalfWidth[0]), hn::Mul(hn::Set(d, kLitterBladeHalfWidth[1]), s.hue));
   const VF twig_width = hn::Add(hn::Set(d, kLitterTwigHalfWidth[0]), hn::Mul(hn::Set(d, kLitterTwigHalfWidth[1]), s.hue));
-  s.middle = hn::IfThenElse(s.leaf, hn::Mul(width, s.half_length),
-                            hn::IfThenElse(s.blade, blade_width, hn::IfThenElse(s.needle, hn::Set(d, kLitterNeedleHalfWidth), twig_width)));
+  s.middle = hn::IfThenElse(
+      s.leaf, hn::Mul(width, s.half_length),
+      hn::IfThenElse(s.cone, hn::Mul(hn::Set(d, kLitterConeWidth), s.half_length),
+                     hn::IfThenElse(s.blade, blade_width, hn::IfThenElse(s.needle, hn::Set(d, kLitterNeedleHalfWidth), twig_width))));
   s.fresh = hn::And(s.leaf, hn::Lt(pick, hn::Mul(hn::Set(d, kLitterDensity), m.fresh)));
   return s;
 }
@@ -100,15 +114,30 @@ inline void lay_sprite_lanes(const SpriteLanes& s, VU h1, VF rx, VF ry, const VF
   const VF rib = hn::IfThenElseZero(s.leaf, hn::Mul(band_cover_lanes(v, hn::Set(d, kLitterRibHalfWidth), frame[0], frame[1]),
                                                     band_cover_lanes(u, hn::Mul(hn::Set(d, 0.9f), s.half_length), frame[0], frame[1])));
   const VF rib_shade = hn::Sub(one, hn::Mul(hn::Set(d, kLitterRib), rib));
+  const bool any_cone = !hn::AllFalse(d, s.cone);  // cones are few: skip their terms when no lane has one
+  VF seam = hn::Zero(d);
+  if (any_cone) {
+    const VF inv_pitch = hn::Set(d, 1.0f / kLitterConePitch), seam_width = hn::Set(d, kLitterConeSeamHalfWidth);
+    seam = hn::IfThenElseZero(
+        s.cone, hn::Max(band_cover_lanes(seam_distance_lanes(hn::Mul(hn::Add(u, across), inv_pitch)), seam_width, frame[0], frame[1]),
+                        band_cover_lanes(seam_distance_lanes(hn::Mul(hn::Sub(u, across), inv_pitch)), seam_width, frame[0], frame[1])));
+  }
+  const VF seam_shade = hn::Sub(one, hn::Mul(hn::Set(d, kLitterConeSeam), seam));
   const VF shade = hn::Sub(one, hn::Mul(hn::Set(d, kLitterShadow), shadow));
   for (int k = 0; k < 3; ++k) {
-    const VF dark = hn::IfThenElse(s.fresh, hn::Set(d, kGroundFallenOrange[k]),
-                                   per_kind(s, kLitterLeafDark[k], kLitterBladeDark[k], kLitterNeedleDark[k], kLitterTwigDark[k]));
-    const VF light = hn::IfThenElse(s.fresh, hn::Set(d, kGroundFallenYellow[k]),
-                                    per_kind(s, kLitterLeafLight[k], kLitterBladeLight[k], kLitterNeedleLight[k], kLitterTwigLight[k]));
-    c[k] = mix_lanes(hn::Mul(c[k], shade), hn::Mul(mix_lanes(dark, light, s.hue), rib_shade), cover);
+    const VF dark = hn::IfThenElse(
+        s.fresh, hn::Set(d, kGroundFallenOrange[k]),
+        per_kind(s, kLitterLeafDark[k], kLitterBladeDark[k], kLitterNeedleDark[k], kLitterTwigDark[k], kLitterConeDark[k]));
+    const VF light = hn::IfThenElse(
+        s.fresh, hn::Set(d, kGroundFallenYellow[k]),
+        per_kind(s, kLitterLeafLight[k], kLitterBladeLight[k], kLitterNeedleLight[k], kLitterTwigLight[k], kLitterConeLight[k]));
+    c[k] = mix_lanes(hn::Mul(c[k], shade), hn::Mul(hn::Mul(mix_lanes(dark, light, s.hue), rib_shade), seam_shade), cover);
   }
-  const VF side = hn::CopySign(hn::IfThenElseZero(s.leaf, hn::Set(d, kLitterCurl)), across);
+  VF side = hn::CopySign(hn::IfThenElseZero(s.leaf, hn::Set(d, kLitterCurl)), across);
+  if (any_cone) {
+    const VF flank = hn::Min(hn::Max(hn::Div(across, hn::Max(half_width, hn::Set(d, 1e-6f))), hn::Set(d, -1.0f)), one);
+    side = hn::IfThenElse(s.cone, hn::Mul(hn::Set(d, kLitterConeRound), flank), side);
+  }
   sx = mix_lanes(sx, hn::Sub(hn::Mul(ux, s.tilt), hn::Mul(uy, side)), cover);
   sy = mix_lanes(sy, hn::Add(hn::Mul(uy, s.tilt), hn::Mul(ux, side)), cover);
 }

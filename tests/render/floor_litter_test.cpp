@@ -67,28 +67,59 @@ TEST(FloorLitter, NoWeightOrAFarFootprintLeavesTheFloorAlone) {
   EXPECT_GT(litter_fade(0.015f), litter_fade(0.025f));
 }
 
+/// A top-layer cell's sprite as its hashes draw it: whether it is kept, its kind and hue draws and its
+/// centre (metres).
+struct TopSprite {
+  bool kept;
+  float kind, hue, x, y;
+};
+
+TopSprite top_sprite(int cx, int cy) {
+  const int32_t top = 2 * (kLitterLayers - 1);
+  const uint32_t h1 = lattice_hash(cx, cy, top, kGroundLitterSalt), h2 = lattice_hash(cx, cy, top + 1, kGroundLitterSalt);
+  return {float(h2 >> 24) / 255.0f < kLitterDensity, float((h2 >> 16) & 255u) / 255.0f, float((h2 >> 8) & 255u) / 255.0f,
+          (float(cx) + float(h1 & 255u) / 255.0f) * kLitterCell, (float(cy) + float((h1 >> 8) & 255u) / 255.0f) * kLitterCell};
+}
+
+/// True when `c` is the mix of `dark` and `light` by `hue`, times `shade`, to 1e-5 in every channel.
+bool has_colour(const Vec3f& c, const float* dark, const float* light, float hue, float shade) {
+  bool same = true;
+  for (int k = 0; k < 3; ++k) same = same && std::abs(c[k] - mix(dark[k], light[k], hue) * shade) < 1e-5f;
+  return same;
+}
+
 TEST(FloorLitter, ALeafCentreHasItsLeafsColourFromTheCellHash) {
   // Known answer from the hashes alone: a kept leaf of the top layer has its centre on its midrib (colour
   // x (1 - kLitterRib)) unless a sprite of a later cell of that layer lies over it.
   int leaves = 0, matched = 0;
   for (int cy = 40; cy < 60; ++cy)
     for (int cx = -10; cx < 10; ++cx) {
-      const int32_t top = 2 * (kLitterLayers - 1);
-      const uint32_t h1 = lattice_hash(cx, cy, top, kGroundLitterSalt), h2 = lattice_hash(cx, cy, top + 1, kGroundLitterSalt);
-      const float pick = float(h2 >> 24) / 255.0f, kind = float((h2 >> 16) & 255u) / 255.0f;
-      if (pick >= kLitterDensity || kind >= 1.0f - kLitterTwigShare) continue;
+      const TopSprite t = top_sprite(cx, cy);
+      if (!t.kept || t.kind >= 1.0f - kLitterTwigShare) continue;
       ++leaves;
-      const float hue = float((h2 >> 8) & 255u) / 255.0f;
-      const float x = (float(cx) + float(h1 & 255u) / 255.0f) * kLitterCell;
-      const float y = (float(cy) + float((h1 >> 8) & 255u) / 255.0f) * kLitterCell;
-      const Vec3f c = litter_at(x, y, 1e-4f, 0.0f);
-      bool same = true;
-      for (int k = 0; k < 3; ++k)
-        same = same && std::abs(c[k] - mix(kLitterLeafDark[k], kLitterLeafLight[k], hue) * (1.0f - kLitterRib)) < 1e-5f;
-      matched += same;
+      matched += has_colour(litter_at(t.x, t.y, 1e-4f, 0.0f), kLitterLeafDark, kLitterLeafLight, t.hue, 1.0f - kLitterRib);
     }
   EXPECT_GT(leaves, 300);
   EXPECT_GT(matched, leaves / 2);
+}
+
+TEST(FloorLitter, ConesLieOnlyUnderConifersWithSeamsAtTheirCentre) {
+  // Known answer from the hashes: where the needle share is 1, a kept sprite of the top layer whose kind
+  // falls in the cone band is a cone, and its centre lies on both seams (colour x (1 - kLitterConeSeam))
+  // unless a later sprite of that layer covers it; with no needles the same cells hold no cone.
+  int cones = 0, matched = 0, broadleaf_cones = 0;
+  const float untwigged = 1.0f - kLitterTwigShare, shade = 1.0f - kLitterConeSeam;
+  for (int cy = 0; cy < 60; ++cy)
+    for (int cx = -30; cx < 30; ++cx) {
+      const TopSprite t = top_sprite(cx, cy);
+      if (!t.kept || t.kind >= untwigged || t.kind < untwigged - kLitterConeShare) continue;
+      ++cones;
+      matched += has_colour(litter_at(t.x, t.y, 1e-4f, 1.0f), kLitterConeDark, kLitterConeLight, t.hue, shade);
+      broadleaf_cones += has_colour(litter_at(t.x, t.y, 1e-4f, 0.0f), kLitterConeDark, kLitterConeLight, t.hue, shade);
+    }
+  EXPECT_GT(cones, 40);  // 2 % of 3 600 cells
+  EXPECT_GT(matched, cones / 2);
+  EXPECT_EQ(broadleaf_cones, 0);
 }
 
 /// Largest colour change between points 1 mm apart along a 1 m line, and the range along it.
@@ -137,6 +168,16 @@ TEST(FloorLitter, SpritesTiltTheReliefWithinTheirLimit) {
   const float limit = std::hypot(kLitterTilt, kLitterCurl);  // tilted along the leaf, curled across it
   EXPECT_GT(steepest, 0.5f * limit);
   EXPECT_LE(steepest, limit * 1.0001f);
+  // Under conifers the cones' round flanks are steeper than any leaf, within their own limit.
+  float steepest_cone = 0.0f;
+  for (int j = 0; j < 100; ++j)
+    for (int i = 0; i < 400; ++i) {
+      Vec2f slope;
+      litter_at(0.0025f * float(i), 0.01f * float(j), 0.0005f, 1.0f, 1.0f, &slope);
+      steepest_cone = std::max(steepest_cone, slope.norm());
+    }
+  EXPECT_GT(steepest_cone, limit * 1.2f);
+  EXPECT_LE(steepest_cone, std::hypot(kLitterTilt, kLitterConeRound) * 1.0001f);
 }
 
 }  // namespace

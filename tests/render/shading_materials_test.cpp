@@ -138,6 +138,11 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     n.emplace_back(0.0f, 0.0f, 1.0f);
     footprint.push_back(0.00005f * float(i % 450));  // 0 .. 2 cm: full sprites to faded
   }
+  for (int i = 0; i < 1024; ++i) {  // a square metre 3.1 cm apart, sharp: about ten points on cones where needles lie
+    p.emplace_back(-3.0f + 0.031f * float(i % 32), 4.0f + 0.031f * float(i / 32), 0.1f);
+    n.emplace_back(0.0f, 0.0f, 1.0f);
+    footprint.push_back(0.0005f);
+  }
   const std::vector<int64_t> targets = test::highway_targets();
   ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
