@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/cellular_noise.hpp"
 #include "core/value_noise.hpp"
@@ -68,22 +69,32 @@ PlateSample plate_at(const Vec3f& p, const Plated& b) {
   return {(c.f2 - c.f1) / steepness / ((0.35f + 0.65f * across_share) * opening), towards, c.nearest_cell};
 }
 
-/// Albedo of plated bark: plates of its colour, each a little lighter or darker, fissures of theirs,
-/// fine grain; the average look where a pixel spans many plates.
-Vec3f plated(const SurfacePoint& s, const Plated& b) {
+/// Albedo of plated bark at s over `plate` (null where the pattern does not show: the mean look):
+/// plates of its colour, each a little lighter or darker, fissures of theirs, fine grain.
+Vec3f plated(const SurfacePoint& s, const Plated& b, const PlateSample* plate) {
   const Vec3f& p = s.position;
   const float grain = value_noise3(p.x() * 40.0f, p.y() * 40.0f, p.z() * 12.0f, kBarkPlate);
   float fissure = b.mean_fissure, tone = 1.0f;
   const float detail = plate_detail(b, s.footprint);
-  if (detail > 0.0f) {
-    const PlateSample plate = plate_at(p, b);
-    fissure += (plate.fissure(b.width) - b.mean_fissure) * detail;
+  if (plate) {
+    fissure += (plate->fissure(b.width) - b.mean_fissure) * detail;
     // Flaking patches and fine grooves along the trunk on each plate's face.
     const float flakes = value_noise3(p.x() * 25.0f, p.y() * 25.0f, p.z() * 8.0f, kBarkPlate + 2);
     const float grooves = value_noise3(p.x() * 70.0f, p.y() * 70.0f, p.z() * 3.0f, kBarkPlate + 3);
-    tone += (b.tone * (lattice_value(plate.plate) - 0.5f) + 0.5f * (flakes - 0.5f) + 0.4f * (grooves - 0.5f)) * detail;
+    tone += (b.tone * (lattice_value(plate->plate) - 0.5f) + 0.5f * (flakes - 0.5f) + 0.4f * (grooves - 0.5f)) * detail;
   }
   return lerp(Vec3f(b.r, b.g, b.b) * tone, Vec3f(b.fr, b.fg, b.fb), fissure) * (0.85f + 0.3f * grain);
+}
+
+/// Relief gradient of plated bark `relief_share` of its full depth over `plate` (null: none).
+Vec3f plated_slope(const SurfacePoint& s, const Plated& b, const PlateSample* plate, float relief_share) {
+  if (!plate) return Vec3f::Zero();
+  const float depth = b.relief * relief_share * plate_detail(b, s.footprint);
+  const float t = plate->metres / b.width;
+  if (t >= 1.0f) return Vec3f::Zero();  // on a plate's flat top
+  // The height depth * (smoothstep(0, width, d) - 1) rises out of the fissure along d's gradient.
+  const float rise = std::min(depth * 6.0f * t * (1.0f - t) / b.width, kMaxBarkSlope);
+  return plate->towards_plate * rise;
 }
 
 /// Share of a pine's bark that is the thin orange upper bark (0 low on the trunk, 1 from about 50 %).
@@ -100,25 +111,21 @@ float birch_white_share(const SurfacePoint& s) {
   return smoothstep(0.06f, 0.14f, s.uv.y() + wobble);
 }
 
-/// Scots pine: grey-brown furrowed plates low, thin orange flakes from about 40 % of the height.
-Vec3f pine(const SurfacePoint& s) {
+/// Scots pine's thin orange flaking upper bark (from about 40 % of the height).
+Vec3f pine_upper(const SurfacePoint& s) {
   const Vec3f& p = s.position;
   const float flake = value_noise3(p.x() * 18.0f, p.y() * 18.0f, p.z() * 6.0f, kBarkPlate + 1);
-  const Vec3f high = Vec3f(0.46f, 0.2f, 0.07f) * (0.75f + 0.35f * flake);
-  const float upper = pine_upper_share(s);
-  return upper >= 1.0f ? high : lerp(plated(s, kPinePlates), high, upper);
+  return Vec3f(0.46f, 0.2f, 0.07f) * (0.75f + 0.35f * flake);
 }
 
-/// Silver birch: white with dark horizontal lenticels and black patches, dark fissured base.
-Vec3f birch(const SurfacePoint& s) {
+/// Silver birch's white bark with dark horizontal lenticels and black patches (above its dark fissured base).
+Vec3f birch_white(const SurfacePoint& s) {
   const Vec3f& p = s.position;
   Vec3f c = Vec3f(0.55f, 0.54f, 0.5f) * (0.9f + 0.1f * value_noise3(p.x() * 8.0f, p.y() * 8.0f, p.z() * 8.0f, kBarkPlate));
   const float dash = value_noise3(p.x() * 5.0f, p.y() * 5.0f, p.z() * 45.0f, kBarkMark);
   c = lerp(c, Vec3f(0.06f, 0.055f, 0.05f), smoothstep(0.78f, 0.84f, dash));
   const float patch = fbm3(p.x() * 2.5f, p.y() * 2.5f, p.z() * 1.2f, 3, kBarkBlotch);
-  c = lerp(c, Vec3f(0.05f, 0.045f, 0.04f), smoothstep(0.68f, 0.74f, patch));
-  const float white = birch_white_share(s);
-  return white >= 1.0f ? c : lerp(plated(s, kBirchBase), c, white);
+  return lerp(c, Vec3f(0.05f, 0.045f, 0.04f), smoothstep(0.68f, 0.74f, patch));
 }
 
 /// Beech: smooth pale grey with soft darker and greenish blotches, paler lichen patches, fine dark
@@ -138,37 +145,40 @@ Vec3f beech(const SurfacePoint& s) {
 
 }  // namespace
 
-Vec3f species_bark_albedo(const SurfacePoint& s) {
-  switch (s.material) {
-    case Material::BarkSpruce: return plated(s, kSpruceScales);
-    case Material::BarkPine: return pine(s);
-    case Material::BarkLarch: return plated(s, kLarchPlates);
-    case Material::BarkBeech: return beech(s);
-    case Material::BarkBirch: return birch(s);
-    case Material::BarkOak: return plated(s, kOakRidges);
-    default: return Vec3f(0.5f, 0.0f, 0.5f);
+bool is_species_bark(Material m) {
+  switch (m) {
+    case Material::BarkSpruce:
+    case Material::BarkPine:
+    case Material::BarkLarch:
+    case Material::BarkBeech:
+    case Material::BarkBirch:
+    case Material::BarkOak: return true;
+    default: return false;
   }
 }
 
-Vec3f species_bark_slope(const SurfacePoint& s, float footprint) {
+SpeciesBark species_bark(const SurfacePoint& s) {
   const Plated* b = nullptr;
-  float share = 1.0f;
+  float upper = 0.0f;  // share of the bark above the plates: pine's orange flakes, birch's white
   switch (s.material) {
     case Material::BarkSpruce: b = &kSpruceScales; break;
-    case Material::BarkPine: b = &kPinePlates, share = 1.0f - pine_upper_share(s); break;
+    case Material::BarkPine: b = &kPinePlates, upper = pine_upper_share(s); break;
     case Material::BarkLarch: b = &kLarchPlates; break;
     case Material::BarkOak: b = &kOakRidges; break;
-    case Material::BarkBirch: b = &kBirchBase, share = 1.0f - birch_white_share(s); break;
-    default: return Vec3f::Zero();
+    case Material::BarkBirch: b = &kBirchBase, upper = birch_white_share(s); break;
+    case Material::BarkBeech: return {beech(s), Vec3f::Zero()};
+    default: return {Vec3f(0.5f, 0.0f, 0.5f), Vec3f::Zero()};
   }
-  const float depth = b->relief * share * plate_detail(*b, footprint);
-  if (depth <= 0.0f) return Vec3f::Zero();
-  const PlateSample plate = plate_at(s.position, *b);
-  const float t = plate.metres / b->width;
-  if (t >= 1.0f) return Vec3f::Zero();  // on a plate's flat top
-  // The height depth * (smoothstep(0, width, d) - 1) rises out of the fissure along d's gradient.
-  const float rise = std::min(depth * 6.0f * t * (1.0f - t) / b->width, kMaxBarkSlope);
-  return plate.towards_plate * rise;
+  const Vec3f above = upper <= 0.0f                     ? Vec3f::Zero()
+                      : s.material == Material::BarkPine ? pine_upper(s)
+                                                         : birch_white(s);
+  if (upper >= 1.0f) return {above, Vec3f::Zero()};
+  // One plate lookup for the colour and the relief, where the pattern shows.
+  std::optional<PlateSample> plate;
+  if (plate_detail(*b, s.footprint) > 0.0f) plate = plate_at(s.position, *b);
+  const PlateSample* shown = plate ? &*plate : nullptr;
+  const Vec3f low = plated(s, *b, shown);
+  return {upper > 0.0f ? lerp(low, above, upper) : low, plated_slope(s, *b, shown, 1.0f - upper)};
 }
 
 }  // namespace silva::render

@@ -4,18 +4,25 @@
 
 namespace silva::render {
 
-/// Linear-RGB albedo of a species bark point; uv.y is the height fraction in the tree (0 at the
-/// ground, 1 at the top), which decides pine's orange upper bark and birch's dark base; past two
-/// fissure widths per pixel (SurfacePoint::footprint) the plates give way to their mean colour.
-Vec3f species_bark_albedo(const SurfacePoint& s);
-
 /// Steepest fissure wall the bark relief gives (rise over run): 45 degrees.
 inline constexpr float kMaxBarkSlope = 1.0f;
 
-/// Gradient (rise per metre, world axes) of a species bark's relief at a point seen with `footprint`
-/// metres per pixel: the walls of the fissures between its plates (3 cm deep on pine and oak, 2 cm on
-/// larch, 1.5 cm on birch's base, 5 mm between spruce's scales), fading out where a pixel spans two
-/// fissure widths; zero on plate tops, on beech's smooth bark and on other materials.
-Vec3f species_bark_slope(const SurfacePoint& s, float footprint);
+/// True for the grown species' barks (core/material.hpp BarkSpruce ... BarkOak).
+bool is_species_bark(Material m);
+
+/// A species bark point's look: its colour and the relief its shading normal adds.
+struct SpeciesBark {
+  Vec3f albedo;  ///< Linear-RGB albedo.
+  /// Gradient (rise per metre, world axes) of the walls of the fissures between its plates (3 cm deep
+  /// on pine and oak, 2 cm on larch, 1.5 cm on birch's base, 5 mm between spruce's scales); zero on
+  /// plate tops and on beech's smooth bark.
+  Vec3f slope;
+};
+
+/// The look of species bark point `s`, from one lookup of the plate under it: uv.y is the height
+/// fraction in the tree (0 at the ground, 1 at the top), which decides pine's orange upper bark and
+/// birch's dark base; past two fissure widths per pixel (SurfacePoint::footprint) the plates give way
+/// to their mean colour and the relief fades out.
+SpeciesBark species_bark(const SurfacePoint& s);
 
 }  // namespace silva::render

@@ -168,7 +168,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BarkLarch:
     case Material::BarkBeech:
     case Material::BarkBirch:
-    case Material::BarkOak: return species_bark_albedo(s);
+    case Material::BarkOak: return species_bark(s).albedo;
     case Material::AutumnLeaves: return autumn_leaves(s);
     case Material::AutumnGrass: return grass(s, Vec3f(0.19f, 0.17f, 0.06f), Vec3f(0.3f, 0.22f, 0.09f));
     case Material::WinterGrass: return grass(s, Vec3f(0.27f, 0.24f, 0.16f), Vec3f(0.2f, 0.16f, 0.11f));
@@ -195,7 +195,7 @@ Vec3f bumped_normal(const Vec3f& n, const Vec3f& slope) {
   return tilted * (1.0f / std::sqrt(tilted.dot(tilted)));
 }
 
-Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
+Vec3f material_shading_normal(const SurfacePoint& s, float footprint, const Vec3f& relief_slope) {
   const Relief r = relief(s.material);
   if (r.height <= 0.0f) return s.normal;
   const float fade = 1.0f - smoothstep(0.15f, 0.4f, footprint * std::max({r.fx, r.fy, r.fz}));
@@ -206,8 +206,7 @@ Vec3f material_shading_normal(const SurfacePoint& s, float footprint) {
     const float h = r.height * fade;
     slope = Vec3f(g.dx * r.fx * h, g.dy * r.fy * h, g.dz * r.fz * h);
   }
-  const Vec3f furrows = species_bark_slope(s, footprint);
-  if (furrows != Vec3f::Zero()) slope += furrows;
+  if (relief_slope != Vec3f::Zero()) slope += relief_slope;
   else if (fade <= 0.0f) return s.normal;
   return bumped_normal(s.normal, slope);
 }

@@ -173,9 +173,10 @@ inline MaterialResponse material_response(Material m) { return kMaterialResponse
 
 /// The shading normal of a surface point with the relief of its material: bark, rock and wood are
 /// bumped by the gradient of the same value noise that grains their albedo, faded out where one
-/// pixel (`footprint` metres) covers more than about a third of the noise's period. Other
-/// materials return s.normal. Labels and the `normals` output keep the geometric normal.
-Vec3f material_shading_normal(const SurfacePoint& s, float footprint);
+/// pixel (`footprint` metres) covers more than about a third of the noise's period, plus
+/// `relief_slope` (a height gradient the caller has: a species bark's fissures, SpeciesBark::slope).
+/// Other materials return s.normal. Labels and the `normals` output keep the geometric normal.
+Vec3f material_shading_normal(const SurfacePoint& s, float footprint, const Vec3f& relief_slope = Vec3f::Zero());
 
 /// `n` tilted by a height field's gradient `slope` (metres per metre) and renormalised: the
 /// gradient's part along n is dropped, the rest subtracted.

@@ -13,6 +13,7 @@
 #include "core/base_color.hpp"
 #include "core/error.hpp"
 #include "render/auto_exposure.hpp"
+#include "render/bark_materials.hpp"
 #include "render/camera_encode.hpp"
 #include "render/camera_optics.hpp"
 #include "render/foliage_aa.hpp"
@@ -183,8 +184,12 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
                        leaf_brightness(g.leaf[i]), in.trail_surface, g.depth[i] * row.metres_per_depth};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
   Vec3f base;
+  // A species bark's colour and fissure relief come from one lookup of its plate.
+  const bool bark = is_species_bark(s.material);
+  const SpeciesBark species = bark ? species_bark(s) : SpeciesBark{Vec3f::Zero(), Vec3f::Zero()};
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])
                  : procedural_ground                   ? row.ground[size_t(u)]
+                 : bark                                ? species.albedo
                  : plain_foliage_base(s.material, base) ? row.foliage[size_t(u)]
                                                        : material_albedo(s);
   const float puddle = look.active() ? look.puddle(s) : 0.0f;
@@ -192,7 +197,7 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const MaterialResponse response = material_response(s.material);
   const Vec2f& slope = row.ground_slope[size_t(u)];
   Vec3f n = procedural_ground ? bumped_normal(s.normal, Vec3f(slope.x(), slope.y(), 0.0f))
-                              : material_shading_normal(s, s.footprint);
+                              : material_shading_normal(s, s.footprint, species.slope);
   if (puddle > 0.0f) n = (n + (Vec3f::UnitZ() - n) * puddle).normalized();  // still water lies level
   const float roughness = look.active() ? look.roughness(s, response.roughness, n, puddle) : response.roughness;
   return {albedo,       n,           s.normal,         view_dir,

@@ -27,7 +27,7 @@ Vec3d mean_albedo(Material m, float footprint) {
   int n = 0;
   for (int i = 0; i < 314; ++i)
     for (int k = 0; k < 150; ++k, ++n)
-      sum += species_bark_albedo(trunk_point(m, 0.02f * float(i), 1.0f + 0.01f * float(k), 0.02f, footprint)).cast<double>();
+      sum += species_bark(trunk_point(m, 0.02f * float(i), 1.0f + 0.01f * float(k), 0.02f, footprint)).albedo.cast<double>();
   return sum / n;
 }
 
@@ -43,10 +43,10 @@ TEST(ShadingBark, PlatesShowDarkFissuresUpClose) {
     int dark = 0, n = 0;
     double darkest = 1.0, lightest = 0.0;
     for (int i = 0; i < 300; ++i, ++n) {
-      const float luma = species_bark_albedo(trunk_point(m, 0.021f * float(i), 1.0f + 0.013f * float(i), 0.02f, 0.0f)).sum();
+      const float luma = species_bark(trunk_point(m, 0.021f * float(i), 1.0f + 0.013f * float(i), 0.02f, 0.0f)).albedo.sum();
       darkest = std::min(darkest, double(luma));
       lightest = std::max(lightest, double(luma));
-      dark += luma < 0.5f * species_bark_albedo(trunk_point(m, 0.0f, 1.0f, 0.02f, 1.0f)).sum() ? 1 : 0;
+      dark += luma < 0.5f * species_bark(trunk_point(m, 0.0f, 1.0f, 0.02f, 1.0f)).albedo.sum() ? 1 : 0;
     }
     EXPECT_LT(darkest, 0.5 * lightest) << material_name(m);
     EXPECT_GT(dark, n / 50) << material_name(m);  // fissures cover a few percent or more
@@ -59,20 +59,21 @@ TEST(ShadingBark, FissureWallsTiltTheNormalUpCloseAndFadeFarAway) {
     int steep = 0;
     for (int i = 0; i < 400; ++i) {
       const SurfacePoint s = trunk_point(m, 0.011f * float(i), 1.0f + 0.007f * float(i), 0.02f, 0.0005f);
-      const Vec3f slope = species_bark_slope(s, s.footprint);
+      const Vec3f slope = species_bark(s).slope;
       EXPECT_LE(slope.norm(), kMaxBarkSlope * 1.0001f) << material_name(m);
       steep += slope.norm() > 0.3f ? 1 : 0;  // a wall of 17 degrees or more
-      EXPECT_EQ(species_bark_slope(s, 1.0f), Vec3f::Zero()) << material_name(m);
+      EXPECT_EQ(species_bark(trunk_point(m, 0.011f * float(i), 1.0f + 0.007f * float(i), 0.02f, 1.0f)).slope, Vec3f::Zero())
+          << material_name(m);
     }
     EXPECT_GT(steep, 4) << material_name(m);
   }
   for (const Material smooth : {Material::BarkBeech, Material::Rock}) {
     const SurfacePoint s = trunk_point(smooth, 0.3f, 1.2f, 0.02f, 0.0005f);
-    EXPECT_EQ(species_bark_slope(s, s.footprint), Vec3f::Zero()) << material_name(smooth);
+    EXPECT_EQ(species_bark(s).slope, Vec3f::Zero()) << material_name(smooth);
   }
   // High on a pine (thin flaking bark) and on a birch's white bark there are no fissures.
-  EXPECT_EQ(species_bark_slope(trunk_point(Material::BarkPine, 0.3f, 12.0f, 0.9f, 0.0005f), 0.0005f), Vec3f::Zero());
-  EXPECT_EQ(species_bark_slope(trunk_point(Material::BarkBirch, 0.3f, 12.0f, 0.9f, 0.0005f), 0.0005f), Vec3f::Zero());
+  EXPECT_EQ(species_bark(trunk_point(Material::BarkPine, 0.3f, 12.0f, 0.9f, 0.0005f)).slope, Vec3f::Zero());
+  EXPECT_EQ(species_bark(trunk_point(Material::BarkBirch, 0.3f, 12.0f, 0.9f, 0.0005f)).slope, Vec3f::Zero());
 }
 
 }  // namespace
