@@ -5,6 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
+
 #include "components/camera.hpp"
 #include "components/phase.hpp"
 #include "components/sensor.hpp"
@@ -46,7 +49,6 @@ void render_camera(const render::Scene& scene, const Camera& camera, const rende
   work.render_s = clock.seconds();
   work.triangles_submitted = stats.triangles_submitted;
   work.triangles_rasterised = stats.triangles_rasterised;
-  work.shadow_s = 0;
 }
 
 /// Renders the stereo pair's right camera of `work` into work.right (its lighting is work's).
@@ -75,21 +77,12 @@ void map_canopy(const render::Scene& scene, const world::WorldContext& ctx, cons
 
 }  // namespace
 
-void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
-                  std::span<const CameraSensor> cameras, render::Renderer& renderer, FrameWork& work) {
-  const Camera& camera = work.frame.camera;
-  work.lighting = render::frame_lighting(settings.lighting, uint64_t(ctx.config.seed), work.frame.sequence,
-                                         uint64_t(work.frame.frame));
-  render::RenderOptions options;
-  options.lod = ctx.config.render.lod;
-  for (const CameraSensor& sensor : cameras) {
-    if (sensor.right)
-      render_right(scene, options, sensor.baseline_m, renderer, work);
-    else
-      render_camera(scene, camera, options, renderer, work);
-  }
-  if (!settings.outputs.has(io::OutputType::Rgb)) return;
+namespace {
+/// Renders the sun's shadow map and the canopy map over it for `work`'s left camera into `work`.
+void render_sun(const render::Scene& scene, const world::WorldContext& ctx, const render::RenderOptions& options,
+                render::Renderer& renderer, FrameWork& work) {
   const Stopwatch clock;
+  const Camera& camera = work.frame.camera;
   const Vec3d sun = render::sun_direction(work.lighting.preset).cast<double>();
   const Vec3d p = camera.position();
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
@@ -97,6 +90,33 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
   renderer.render_shadow_map(scene, sun, plan.region, plan.resolution, options, work.shadow);
   map_canopy(scene, ctx, render::canopy_region(plan.region), options, renderer, work);
   work.shadow_s = clock.seconds();
+}
+}  // namespace
+
+void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
+                  std::span<const CameraSensor> cameras, FrameSlots& slots, FrameWork& work) {
+  work.lighting = render::frame_lighting(settings.lighting, uint64_t(ctx.config.seed), work.frame.sequence,
+                                         uint64_t(work.frame.frame));
+  render::RenderOptions options;
+  options.lod = ctx.config.render.lod;
+  const auto draw_cameras = [&] {
+    for (const CameraSensor& sensor : cameras) {
+      if (sensor.right)
+        render_right(scene, options, sensor.baseline_m, *slots.renderer, work);
+      else
+        render_camera(scene, work.frame.camera, options, *slots.renderer, work);
+    }
+  };
+  if (!settings.outputs.has(io::OutputType::Rgb)) {
+    draw_cameras();
+    work.shadow_s = 0;
+  } else if (tbb::this_task_arena::max_concurrency() < kThreadsForSunBeside) {
+    draw_cameras();
+    render_sun(scene, ctx, options, *slots.renderer, work);
+  } else {
+    if (!slots.sun_renderer) slots.sun_renderer = std::make_unique<render::Renderer>();
+    tbb::parallel_invoke(draw_cameras, [&] { render_sun(scene, ctx, options, *slots.sun_renderer, work); });
+  }
 }
 
 void install_render_views(ecs::World& world, CaptureSettings settings) {
@@ -120,7 +140,7 @@ void install_render_views(ecs::World& world, CaptureSettings settings) {
         work->frame = sys.get<const world::PlannedFrame>(camera);
         work->files.clear();
         render_frame(sys.resource<const PreparedScene>().frame.scene, *sys.resource<const WorldSource>().ctx,
-                     sys.resource<const CaptureSettings>(), cameras, *slots.renderer, *work);
+                     sys.resource<const CaptureSettings>(), cameras, slots, *work);
         slots.current = std::move(work);
       });
 }

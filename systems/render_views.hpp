@@ -72,7 +72,10 @@ class FrameSlots {
  public:
   /// A free slot (a new one when none is free); it returns to the pool when its last owner drops it.
   std::shared_ptr<FrameWork> take();
-  std::unique_ptr<render::Renderer> renderer = std::make_unique<render::Renderer>();  ///< Keeps its pass buffers.
+  std::unique_ptr<render::Renderer> renderer = std::make_unique<render::Renderer>();  ///< Camera passes' buffers.
+  /// The sun's passes (shadow map, canopy map) while `renderer` draws the cameras, made on first use from
+  /// kThreadsForSunBeside threads (null below: `renderer` draws them after the cameras).
+  std::unique_ptr<render::Renderer> sun_renderer;
   std::shared_ptr<FrameWork> current; ///< The slot the Render phase filled this frame (or null).
 
  private:
@@ -83,11 +86,16 @@ class FrameSlots {
   std::shared_ptr<Pool> pool_ = std::make_shared<Pool>();
 };
 
-/// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from `scene` — the left camera's into
-/// `work`, a stereo pair's right camera's into work.right — and the left camera's shadow map and canopy map when
-/// rgb is selected.
+/// Threads from which the sun's passes run beside the camera passes, on a renderer of their own (its buffers add
+/// about 110 MB to a 720p run, which fewer threads do not repay).
+inline constexpr int kThreadsForSunBeside = 4;
+
+/// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from `scene` with `slots.renderer` — the
+/// left camera's into `work`, a stereo pair's right camera's into work.right — and, when rgb is selected, the
+/// left camera's shadow map and canopy map: from kThreadsForSunBeside threads at the same time with
+/// `slots.sun_renderer`, else afterwards with `slots.renderer`.
 void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
-                  std::span<const CameraSensor> cameras, render::Renderer& renderer, FrameWork& work);
+                  std::span<const CameraSensor> cameras, FrameSlots& slots, FrameWork& work);
 
 /// Registers "render_views" (phase Render): when a camera is active, renders the PreparedScene
 /// into a fresh FrameSlots slot, left in FrameSlots::current for the Write phase.

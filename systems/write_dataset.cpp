@@ -244,6 +244,11 @@ void create_output_folders(const fs::path& run_dir, const std::vector<world::Pla
   }
 }
 
+size_t frames_in_flight(size_t threads) {
+  if (threads <= 1) return 1;
+  return std::min(kMaxFramesInFlight, kFramesInFlight + (threads - 2) / kThreadsPerFrameInFlight);
+}
+
 void install_write_dataset(ecs::World& world) {
   world.set_resource(std::make_unique<DatasetWriter>());
   world.system("write_dataset")

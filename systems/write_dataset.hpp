@@ -7,6 +7,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ecs/ordered_stage.hpp"
 #include "ecs/world.hpp"
@@ -19,8 +21,15 @@
 
 namespace silva::systems {
 
-/// Frames alive at once: the one rendering plus those shading, encoding and writing.
+/// Frames alive at once on two threads: the one rendering plus those shading, encoding and writing.
 inline constexpr size_t kFramesInFlight = 3;
+/// Most frames alive at once: one more per kThreadsPerFrameInFlight threads beyond the first two.
+inline constexpr size_t kMaxFramesInFlight = 5;
+/// Threads that keep one more frame in flight busy: each frame's PNGs are encoded one per thread.
+inline constexpr size_t kThreadsPerFrameInFlight = 4;
+
+/// Frames alive at once on `threads` threads (1 on one thread: each frame written before the next renders).
+size_t frames_in_flight(size_t threads);
 
 /// Counts and per-step wall times of a capture run (seconds summed over frames).
 struct CaptureStats {
@@ -45,6 +54,7 @@ struct CaptureStats {
   uint64_t lidar_points = 0;  ///< LiDAR returns written.
   io::KnownCounts card;       ///< The dataset card's label counts of the frames written (the card reads no PNG of them).
   double wall_s = 0;     ///< Whole run, wall clock.
+  std::vector<std::pair<std::string, double>> system_s;  ///< Each ECS system's wall time over the run, schedule order.
 };
 
 /// Called after each frame is written with (frames done, frames total).
@@ -80,8 +90,7 @@ void create_output_folders(const std::filesystem::path& run_dir, const std::vect
 /// progress and total before the frames run): hands FrameSlots::current to the writer's stage:
 /// RGB shading and encoding in parallel, then the frame's files written atomically in frame order,
 /// its camera JSON last (its presence marks the frame complete). Waits for the oldest frame when
-/// the stage's limit (kFramesInFlight - 1; 0 on one thread) is reached, so at most
-/// kFramesInFlight frames hold buffers.
+/// the stage's limit (frames_in_flight(threads) - 1) is reached, so at most that many frames hold buffers.
 void install_write_dataset(ecs::World& world);
 
 }  // namespace silva::systems

@@ -8,16 +8,11 @@
 
 namespace silva::world {
 
-namespace {
-
-/// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level and bounds.
 ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord) {
   ChunkContent c = generate_chunk(ctx, coord);
   add_terrain_level(c);
   return c;
 }
-
-}  // namespace
 
 std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::require(const WorldContext& ctx,
                                                                      const std::vector<ChunkCoord>& coords) {

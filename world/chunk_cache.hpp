@@ -13,9 +13,21 @@
 
 namespace silva::world {
 
+/// Anything that hands out drawable chunks by coordinates (generating those it lacks).
+class ChunkSource {
+ public:
+  virtual ~ChunkSource() = default;
+  /// The chunks of `coords`, in that order.
+  virtual std::vector<std::shared_ptr<const ChunkContent>> require(const WorldContext& ctx,
+                                                                   const std::vector<ChunkCoord>& coords) = 0;
+};
+
+/// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level and bounds.
+ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord);
+
 /// LRU cache of chunk contents keyed by chunk coordinates, as the renderer draws them: each with
 /// its terrain's coarse level and bounds (ChunkContent::terrain_lod, terrain_bounds).
-class ChunkCache {
+class ChunkCache : public ChunkSource {
  public:
   /// Cache holding at most `capacity` chunks after each require() (more only while one
   /// require() needs more at once).
@@ -23,7 +35,8 @@ class ChunkCache {
   /// Makes every chunk in `coords` present (missing ones generated in parallel with TBB), marks
   /// them most recently used (in the given order), then evicts least recently used beyond capacity.
   /// Returns the contents in the order of `coords`.
-  std::vector<std::shared_ptr<const ChunkContent>> require(const WorldContext& ctx, const std::vector<ChunkCoord>& coords);
+  std::vector<std::shared_ptr<const ChunkContent>> require(const WorldContext& ctx,
+                                                           const std::vector<ChunkCoord>& coords) override;
   /// The chunks of `coords` that are not present, sorted and unique.
   std::vector<ChunkCoord> missing(const std::vector<ChunkCoord>& coords) const;
   /// Adds generated chunks (absent ones; each counts as generated) as the most recently used.

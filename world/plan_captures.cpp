@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "core/rig_presets.hpp"
 #include "core/rng.hpp"
+#include "world/parallel_plan.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/rig_mount_check.hpp"
 #include "world/terrain.hpp"
@@ -86,10 +87,10 @@ const std::vector<Eigen::Vector2d>& spiral_offsets() {
 
 /// The first clear spot of the spiral around (x, y) inside the capture region on walkable
 /// ground: its offset index and eye, or index -1.
-std::pair<int, Vec3d> clear_spiral_spot(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns,
+std::pair<int, Vec3d> clear_spiral_spot(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns,
                                         double x, double y) {
   const double radius = kSpiralRings * kPoseSearchStep, half = 0.5 * ctx.config.world.extent;
-  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, x, y, probe_radius(ctx, radius));
+  const ClearanceProbe probe = ClearanceProbe::around(ctx, chunks, crowns, x, y, probe_radius(ctx, radius));
   const auto& offsets = spiral_offsets();
   for (size_t k = 0; k < offsets.size(); ++k) {
     const double cx = x + offsets[k].x(), cy = y + offsets[k].y();
@@ -118,42 +119,51 @@ std::vector<PlannedFrame> plan_autopilot(const WorldContext& ctx) {
   return frames;
 }
 
-void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames) {
-  const CrownProfiles crowns(*ctx.library);
+namespace {
+/// Lifts the frames of the autopilot point whose first frame is `first` to their eye height, or moves them
+/// along the trail to the nearest clear spot within kTrailSearchReach (PoseFix::Unresolvable when none).
+void settle_point(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns,
+                  std::vector<PlannedFrame>& frames, size_t first) {
   const size_t yaws = ctx.config.captures.autopilot_yaws.size();
   const double length = ctx.trail.nav.length();
   const bool aerial = ctx.config.captures.aerial;
-  const auto lift = [&](size_t first, double z) {
+  const auto lift = [&](double z) {
     for (size_t k = 0; k < yaws; ++k) frames[first + k].camera.camera_to_world(2, 3) = z;
   };
-  for (size_t first = 0; first + yaws <= frames.size(); first += yaws) {
-    const double s0 = *frames[first].trail_s;
-    const Vec3d trail_eye = frames[first].camera.position();
-    const ClearanceProbe here =
-        ClearanceProbe::around(ctx, cache, crowns, trail_eye.x(), trail_eye.y(), probe_radius(ctx, 0.0));
-    const Vec3d eye(trail_eye.x(), trail_eye.y(), eye_z(ctx, here, trail_eye.x(), trail_eye.y()));
-    lift(first, eye.z());
-    if (here.clear(eye, aerial)) continue;
-    const ClearanceProbe probe =
-        ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), probe_radius(ctx, kTrailSearchReach));
-    std::optional<Vec3d> found;  // arc length, -, eye height
-    for (int step = 1; step <= int(kTrailSearchReach / kPoseSearchStep) && !found; ++step)
-      for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
-        if (s < 0.0 || s > length) continue;
-        const Vec3d p = ctx.trail.nav.position(s);
-        const double z = eye_z(ctx, probe, p.x(), p.y());
-        if (probe.clear(Vec3d(p.x(), p.y(), z), aerial)) {
-          found = Vec3d(s, 0.0, z);
-          break;
-        }
+  const double s0 = *frames[first].trail_s;
+  const Vec3d trail_eye = frames[first].camera.position();
+  const ClearanceProbe here =
+      ClearanceProbe::around(ctx, chunks, crowns, trail_eye.x(), trail_eye.y(), probe_radius(ctx, 0.0));
+  const Vec3d eye(trail_eye.x(), trail_eye.y(), eye_z(ctx, here, trail_eye.x(), trail_eye.y()));
+  lift(eye.z());
+  if (here.clear(eye, aerial)) return;
+  const ClearanceProbe probe =
+      ClearanceProbe::around(ctx, chunks, crowns, eye.x(), eye.y(), probe_radius(ctx, kTrailSearchReach));
+  std::optional<Vec3d> found;  // arc length, -, eye height
+  for (int step = 1; step <= int(kTrailSearchReach / kPoseSearchStep) && !found; ++step)
+    for (const double s : {s0 + step * kPoseSearchStep, s0 - step * kPoseSearchStep}) {
+      if (s < 0.0 || s > length) continue;
+      const Vec3d p = ctx.trail.nav.position(s);
+      const double z = eye_z(ctx, probe, p.x(), p.y());
+      if (probe.clear(Vec3d(p.x(), p.y(), z), aerial)) {
+        found = Vec3d(s, 0.0, z);
+        break;
       }
-    for (size_t k = 0; k < yaws; ++k) {
-      PlannedFrame& f = frames[first + k];
-      if (found) f = autopilot_frame(ctx, f.frame / int(yaws), k, found->x());
-      f.pose_fix = found ? PoseFix::Moved : PoseFix::Unresolvable;
     }
-    if (found) lift(first, found->z());
+  for (size_t k = 0; k < yaws; ++k) {
+    PlannedFrame& f = frames[first + k];
+    if (found) f = autopilot_frame(ctx, f.frame / int(yaws), k, found->x());
+    f.pose_fix = found ? PoseFix::Moved : PoseFix::Unresolvable;
   }
+  if (found) lift(found->z());
+}
+}  // namespace
+
+void settle_autopilot(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames) {
+  const CrownProfiles crowns(*ctx.library);
+  const size_t yaws = ctx.config.captures.autopilot_yaws.size();
+  plan_in_parallel(cache, yaws == 0 ? 0 : frames.size() / yaws,
+                   [&](size_t point, ChunkSource& chunks) { settle_point(ctx, chunks, crowns, frames, point * yaws); });
 }
 
 Mat4d autopilot_pose_along(const WorldContext& ctx, const PlannedFrame& f, double distance) {
@@ -175,38 +185,46 @@ void add_autopilot_motion(const WorldContext& ctx, std::vector<PlannedFrame>& fr
                                        autopilot_pose_along(ctx, f, half)};
 }
 
-std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {
+namespace {
+/// Random frame `f`: the first walkable draw of its own random stream with a clear spot on its spiral, else
+/// the first walkable draw as drawn (PoseFix::Unresolvable).
+PlannedFrame random_frame(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns, int f) {
   const Config& c = ctx.config;
   const auto [height, pitch] = camera_height_and_pitch(c);
   const double half = 0.5 * c.world.extent;
-  const CrownProfiles crowns(*ctx.library);
-  std::vector<PlannedFrame> frames;
-  for (int f = 0; f < c.captures.random_count; ++f) {
-    Rng rng(uint64_t(c.seed), uint64_t(f), Purpose::RandomPose);
-    std::optional<Vec3d> first;  // x, y, yaw of the first walkable draw
-    int draws = 0;
-    for (int attempt = 0; attempt < kMaxPoseAttempts && draws < kMaxClearanceDraws; ++attempt) {
-      const double x = rng.range(float(-half), float(half));
-      const double y = rng.range(float(-half), float(half));
-      const double yaw = rng.range(-180.0f, 180.0f);
-      if (!walkable(ctx, x, y)) continue;
-      if (!first) first = Vec3d(x, y, yaw);
-      ++draws;
-      const auto [spot, eye] = clear_spiral_spot(ctx, cache, crowns, x, y);
-      if (spot < 0) continue;
-      frames.push_back(make_frame(ctx, "random", f, eye, yaw, pitch, 0.0, c.captures.aerial));
-      frames.back().pose_fix = draws == 1 && spot == 0 ? PoseFix::Clear : PoseFix::Moved;
-      break;
-    }
-    if (int(frames.size()) == f + 1) continue;
-    if (!first)
-      throw InputError("captures.random_count: found no walkable pose for random frame " + std::to_string(f) + " in " +
-                       std::to_string(kMaxPoseAttempts) + " tries; enlarge world.extent or lower terrain.max_elevation");
-    const Vec3d p = *first;
-    frames.push_back(make_frame(ctx, "random", f, Vec3d(p.x(), p.y(), terrain_height(ctx.terrain, p.x(), p.y()) + height),
-                                p.z(), pitch, 0.0, c.captures.aerial));
-    frames.back().pose_fix = PoseFix::Unresolvable;
+  Rng rng(uint64_t(c.seed), uint64_t(f), Purpose::RandomPose);
+  std::optional<Vec3d> first;  // x, y, yaw of the first walkable draw
+  int draws = 0;
+  for (int attempt = 0; attempt < kMaxPoseAttempts && draws < kMaxClearanceDraws; ++attempt) {
+    const double x = rng.range(float(-half), float(half));
+    const double y = rng.range(float(-half), float(half));
+    const double yaw = rng.range(-180.0f, 180.0f);
+    if (!walkable(ctx, x, y)) continue;
+    if (!first) first = Vec3d(x, y, yaw);
+    ++draws;
+    const auto [spot, eye] = clear_spiral_spot(ctx, chunks, crowns, x, y);
+    if (spot < 0) continue;
+    PlannedFrame frame = make_frame(ctx, "random", f, eye, yaw, pitch, 0.0, c.captures.aerial);
+    frame.pose_fix = draws == 1 && spot == 0 ? PoseFix::Clear : PoseFix::Moved;
+    return frame;
   }
+  if (!first)
+    throw InputError("captures.random_count: found no walkable pose for random frame " + std::to_string(f) + " in " +
+                     std::to_string(kMaxPoseAttempts) + " tries; enlarge world.extent or lower terrain.max_elevation");
+  const Vec3d p = *first;
+  PlannedFrame frame = make_frame(ctx, "random", f, Vec3d(p.x(), p.y(), terrain_height(ctx.terrain, p.x(), p.y()) + height),
+                                  p.z(), pitch, 0.0, c.captures.aerial);
+  frame.pose_fix = PoseFix::Unresolvable;
+  return frame;
+}
+}  // namespace
+
+std::vector<PlannedFrame> plan_random(const WorldContext& ctx, ChunkCache& cache) {
+  const CrownProfiles crowns(*ctx.library);
+  std::vector<PlannedFrame> frames(size_t(std::max(0, ctx.config.captures.random_count)));
+  plan_in_parallel(cache, frames.size(), [&](size_t f, ChunkSource& chunks) {
+    frames[f] = random_frame(ctx, chunks, crowns, int(f));
+  });
   return frames;
 }
 
@@ -248,12 +266,15 @@ std::vector<PlannedFrame> plan_trajectory(const WorldContext& ctx) {
 void check_walk(const WorldContext& ctx, ChunkCache& cache, std::vector<PlannedFrame>& frames,
                 const std::function<void(const std::string&)>& warn) {
   const CrownProfiles crowns(*ctx.library);
+  plan_in_parallel(cache, frames.size(), [&](size_t i, ChunkSource& chunks) {
+    PlannedFrame& f = frames[i];
+    const Vec3d eye = f.camera.position();
+    const ClearanceProbe probe = ClearanceProbe::around(ctx, chunks, crowns, eye.x(), eye.y(), 0.0);
+    f.pose_fix = probe.solid_at(eye, ctx.config.camera.near) ? PoseFix::Unresolvable : PoseFix::Clear;
+  });
   const PlannedFrame* first = nullptr;
   int blocked = 0;
-  for (PlannedFrame& f : frames) {
-    const Vec3d eye = f.camera.position();
-    const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, eye.x(), eye.y(), 0.0);
-    f.pose_fix = probe.solid_at(eye, ctx.config.camera.near) ? PoseFix::Unresolvable : PoseFix::Clear;
+  for (const PlannedFrame& f : frames) {
     if (f.pose_fix == PoseFix::Clear) continue;
     if (!first) first = &f;
     ++blocked;

@@ -75,9 +75,9 @@ ClearanceProbe::ClearanceProbe(const WorldContext& ctx, const CrownProfiles& cro
     }
 }
 
-ClearanceProbe ClearanceProbe::around(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns,
+ClearanceProbe ClearanceProbe::around(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns,
                                       double x, double y, double radius) {
-  return ClearanceProbe(ctx, crowns, cache.require(ctx, chunks_in_disc(x, y, reach(ctx, radius), ctx.chunk_size())), x,
+  return ClearanceProbe(ctx, crowns, chunks.require(ctx, chunks_in_disc(x, y, reach(ctx, radius), ctx.chunk_size())), x,
                         y, radius);
 }
 

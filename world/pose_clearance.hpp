@@ -52,9 +52,8 @@ class ClearanceProbe {
                  const std::vector<std::shared_ptr<const ChunkContent>>& chunks, double x, double y, double radius);
   /// Horizontal distance around a pose whose chunks a probe of search radius `radius` needs.
   static double reach(const WorldContext& ctx, double radius);
-  /// The probe of search radius `radius` around (x, y) over the chunks it needs, taken from (or generated into)
-  /// `cache`.
-  static ClearanceProbe around(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, double x,
+  /// The probe of search radius `radius` around (x, y) over the chunks it needs, taken from `chunks`.
+  static ClearanceProbe around(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns, double x,
                                double y, double radius);
   /// True when a camera at `eye` keeps the clearances: a ground camera's column (from the ground
   /// to the eye) and an aerial camera's eye keep captures.clearance from every solid proxy, and the

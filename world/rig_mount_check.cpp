@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/rig_presets.hpp"
+#include "world/parallel_plan.hpp"
 #include "world/pose_clearance.hpp"
 #include "world/stereo_rig.hpp"
 
@@ -27,10 +28,10 @@ std::string rig_keys(const RigConfig& rig) {
 }
 
 /// Throws when `camera` (named `which`) of frame `f` is inside a solid object near it.
-void check_camera(const WorldContext& ctx, ChunkCache& cache, const CrownProfiles& crowns, const PlannedFrame& f,
+void check_camera(const WorldContext& ctx, ChunkSource& chunks, const CrownProfiles& crowns, const PlannedFrame& f,
                   const Camera& camera, const char* which) {
   const Vec3d p = camera.position();
-  const ClearanceProbe probe = ClearanceProbe::around(ctx, cache, crowns, p.x(), p.y(), 0.0);
+  const ClearanceProbe probe = ClearanceProbe::around(ctx, chunks, crowns, p.x(), p.y(), 0.0);
   const Vegetation* inside = probe.solid_at(p, ctx.config.camera.near);
   if (!inside) return;
   char where[160];
@@ -48,10 +49,11 @@ void check_rig_mounts(const WorldContext& ctx, ChunkCache& cache, const std::vec
   if (rig.cameras == 1 && rig.height_m == 0) return;
   const CrownProfiles crowns(*ctx.library);
   const double baseline = stereo_baseline_m(rig);
-  for (const PlannedFrame& f : frames) {
-    if (f.walk) check_camera(ctx, cache, crowns, f, f.camera, "left");
-    if (baseline > 0) check_camera(ctx, cache, crowns, f, stereo_right(f, baseline).camera, "right");
-  }
+  plan_in_parallel(cache, frames.size(), [&](size_t i, ChunkSource& chunks) {
+    const PlannedFrame& f = frames[i];
+    if (f.walk) check_camera(ctx, chunks, crowns, f, f.camera, "left");
+    if (baseline > 0) check_camera(ctx, chunks, crowns, f, stereo_right(f, baseline).camera, "right");
+  });
 }
 
 }  // namespace silva::world

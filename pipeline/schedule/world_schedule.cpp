@@ -89,12 +89,12 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   writer.stats = {};
   writer.progress = progress;
   writer.total = int(frames.size());
-  // One thread cannot overlap frames: write each before the next renders (one frame's buffers).
   const size_t threads = std::min<size_t>(size_t(tbb::this_task_arena::max_concurrency()),
                                           tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  writer.stage.set_limit(threads > 1 ? systems::kFramesInFlight - 1 : 0);
+  writer.stage.set_limit(systems::frames_in_flight(threads) - 1);
   const world::ChunkCache& cache = world_.resource<world::ChunkCache>();
   const size_t generated_before = cache.generated();
+  const std::vector<ecs::SystemStats> systems_before = world_.system_stats();
   double stream_s = 0, prepare_s = 0;
   bool stopped = false;
   while (queue.pending() && !writer.stage.failed()) {
@@ -114,6 +114,10 @@ systems::CaptureStats WorldSchedule::capture(const std::vector<world::PlannedFra
   stats.prepare_s = prepare_s;
   stats.chunks_generated = cache.generated() - generated_before;
   stats.wall_s = run_clock.seconds();
+  for (size_t i = 0; i < systems_before.size(); ++i) {
+    const ecs::SystemStats& st = world_.system_stats()[i];
+    stats.system_s.emplace_back(st.name, double(st.total_ns - systems_before[i].total_ns) * 1e-9);
+  }
   return stats;
 }
 

@@ -114,6 +114,13 @@ nlohmann::json pixel_shares(const systems::CaptureStats& s) {
   for (int r = 0; r < kRoleCount; ++r) by_class[role_name(Role(r))] = share(s.pixels_by_role[size_t(r)]);
   return {{"pixels", total}, {"by_class", by_class}, {"bare_soil_look", share(s.bare_soil_pixels)}};
 }
+
+/// {system name: seconds} of each ECS system's wall time over the run.
+nlohmann::json system_seconds(const systems::CaptureStats& s) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, seconds] : s.system_s) j[name] = seconds;
+  return j;
+}
 }  // namespace
 
 nlohmann::json count_pose_fixes(const std::vector<world::PlannedFrame>& frames) {
@@ -158,6 +165,7 @@ nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int 
         {"write", s.write_s},
         {"lidar", s.lidar_s},
         {"wall", s.wall_s}}},
+      {"systems_s", system_seconds(s)},
   };
 }
 
