@@ -21,6 +21,10 @@ std::vector<ChunkCoord> capture_chunks(const Camera& camera, double chunk_size, 
   return world::chunks_for_view(camera, chunk_size, std::max(kShadowCasterReach, lidar_reach));
 }
 
+double lidar_reach(const CaptureSettings& settings) {
+  return settings.outputs.has(io::OutputType::Lidar) ? settings.lidar.max_range : 0.0;
+}
+
 void install_aim_camera(ecs::World& world) {
   world.set_resource(CaptureQueue{});
   world.set_resource(ViewChunks{});
@@ -38,9 +42,7 @@ void install_aim_camera(ecs::World& world) {
         const double chunk_size = sys.resource<const WorldSource>().ctx->chunk_size();
         const Camera& camera = sys.get<const world::PlannedFrame>(queue.active).camera;
         // A LiDAR sees all around: the disc out to its range, when it is selected.
-        const CaptureSettings& settings = sys.resource<const CaptureSettings>();
-        const double lidar_reach = settings.outputs.has(io::OutputType::Lidar) ? settings.lidar.max_range : 0.0;
-        view.coords = capture_chunks(camera, chunk_size, lidar_reach);
+        view.coords = capture_chunks(camera, chunk_size, lidar_reach(sys.resource<const CaptureSettings>()));
       });
 }
 

@@ -8,6 +8,7 @@
 #include "components/chunk.hpp"
 #include "components/phase.hpp"
 #include "components/world_source.hpp"
+#include "systems/prefetch_chunks.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/chunk_content.hpp"
 #include "world/world_context.hpp"
@@ -26,13 +27,20 @@ std::vector<ChunkCoord> halo_of(const std::vector<ChunkCoord>& full, int ring) {
   return {halo.begin(), halo.end()};
 }
 
-/// Spawns chunk entities for the needed chunks the cache lacks.
+/// Stores the prefetched chunks when they are exactly the needed chunks the cache lacks (as store_chunks would:
+/// sorted, with their terrain's coarse level), else spawns chunk entities for those.
 void stream(ecs::SystemContext& sys) {
   const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
   std::vector<ChunkCoord> needed = sys.resource<const ViewChunks>().coords;
   const auto& pinned = sys.resource<const PinnedChunks>().coords;
   needed.insert(needed.end(), pinned.begin(), pinned.end());
-  const std::vector<ChunkCoord> full = sys.resource<const world::ChunkCache>().missing(needed);
+  world::ChunkCache& cache = sys.resource<world::ChunkCache>();
+  const std::vector<ChunkCoord> full = cache.missing(needed);
+  std::vector<std::shared_ptr<ChunkContent>> ready = sys.resource<PrefetchedChunks>().take(full);
+  if (!ready.empty()) {
+    cache.insert(std::move(ready));
+    return;
+  }
   if (full.empty()) return;
   ecs::CommandBuffer& cb = sys.commands();
   for (ChunkCoord c : full) {
@@ -47,10 +55,12 @@ void stream(ecs::SystemContext& sys) {
 
 void install_stream_chunks(ecs::World& world) {
   if (!world.has_resource<PinnedChunks>()) world.set_resource(PinnedChunks{});
+  if (!world.has_resource<PrefetchedChunks>()) world.set_resource(PrefetchedChunks{});
   world.system("stream_chunks")
       .phase(Phase::Stream)
       .after("aim_camera")
-      .reads_resource<WorldSource, ViewChunks, PinnedChunks, world::ChunkCache>()
+      .reads_resource<WorldSource, ViewChunks, PinnedChunks>()
+      .writes_resource<world::ChunkCache, PrefetchedChunks>()
       .writes<Chunk>()
       .run(stream);
 }

@@ -19,6 +19,7 @@
 #include "systems/generate_terrain.hpp"
 #include "systems/place_vegetation.hpp"
 #include "systems/plan_captures.hpp"
+#include "systems/prefetch_chunks.hpp"
 #include "systems/prepare_scene.hpp"
 #include "systems/resolve_overlaps.hpp"
 #include "systems/store_chunks.hpp"
@@ -41,6 +42,7 @@ WorldSchedule::WorldSchedule(const world::WorldContext& ctx, std::size_t cache_c
   systems::install_resolve_overlaps(world_);
   systems::install_store_chunks(world_);
   systems::install_prepare_scene(world_, *ctx.library);
+  systems::install_prefetch_chunks(world_);
   systems::install_render_views(world_, {});
   systems::install_cast_lidar(world_, *ctx.library);
   systems::install_write_dataset(world_);

@@ -9,11 +9,14 @@
 #include "components/camera.hpp"
 #include "components/chunk.hpp"
 #include "components/phase.hpp"
+#include "systems/aim_camera.hpp"
+#include "systems/prefetch_chunks.hpp"
 #include "tests/common/test_library.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/chunk_content.hpp"
 #include "world/world_generator.hpp"
+#include "world/world_summary.hpp"
 
 namespace silva::pipeline {
 namespace {
@@ -38,7 +41,7 @@ TEST(Schedule, RegistersEverySystemInPhaseOrderWithoutConflicts) {
   }
   EXPECT_EQ(names, (std::vector<std::string>{"plan_captures", "aim_camera", "stream_chunks", "generate_terrain",
                                              "place_vegetation", "resolve_overlaps", "store_chunks", "prepare_scene",
-                                             "render_views", "cast_lidar", "write_dataset"}));
+                                             "prefetch_chunks", "render_views", "cast_lidar", "write_dataset"}));
   EXPECT_TRUE(schedule.ecs().schedule_conflicts().empty());
 }
 
@@ -71,18 +74,23 @@ TEST(Schedule, ChunksBuiltForDrawingCarryTheirCoarseTerrain) {
   }
 }
 
+/// Frame `k` of `steps` along the trail: a small camera looking along it.
+world::PlannedFrame trail_frame(const world::WorldContext& ctx, int k, int steps) {
+  const auto& nav = ctx.trail.nav;
+  const double s = k * nav.length() / steps;
+  const Vec3d p = nav.position(s), t = nav.tangent(s);
+  world::PlannedFrame f;
+  f.camera = Camera::from_fov(96, 64, 90, ctx.config.camera.near, ctx.config.camera.far);
+  f.camera.camera_to_world = pose_from_angles(p + Vec3d(0, 0, 1.5), std::atan2(t.y(), t.x()) * 180 / M_PI, 0, 0);
+  return f;
+}
+
 TEST(Schedule, CamerasWalkingTheTrailStreamTheirChunksWithinTheCacheBound) {
   const world::WorldContext ctx = walk_context();
   const size_t bound = 12;
   WorldSchedule schedule(ctx, bound);
-  const auto& nav = ctx.trail.nav;
   for (int k = 0; k <= 30; ++k) {
-    const double s = k * nav.length() / 30;
-    const Vec3d p = nav.position(s), t = nav.tangent(s);
-    world::PlannedFrame f;
-    f.camera = Camera::from_fov(96, 64, 90, ctx.config.camera.near, ctx.config.camera.far);
-    f.camera.camera_to_world = pose_from_angles(p + Vec3d(0, 0, 1.5), std::atan2(t.y(), t.x()) * 180 / M_PI, 0, 0);
-    schedule.ecs().resource<CaptureQueue>().cameras = {schedule.ecs().spawn(f)};
+    schedule.ecs().resource<CaptureQueue>().cameras = {schedule.ecs().spawn(trail_frame(ctx, k, 30))};
     schedule.ecs().resource<CaptureQueue>().next = 0;
     schedule.ecs().run_phases(Phase::Stream, Phase::Prepare);
     const world::ChunkCache& cache = schedule.ecs().resource<world::ChunkCache>();
@@ -93,6 +101,51 @@ TEST(Schedule, CamerasWalkingTheTrailStreamTheirChunksWithinTheCacheBound) {
     EXPECT_EQ(schedule.ecs().view<const Chunk>().size_hint(), 0u);
   }
   EXPECT_GT(schedule.ecs().resource<world::ChunkCache>().generated(), bound);  // chunks streamed in and out
+}
+
+TEST(Schedule, TheNextFramesChunksMadeWhileAFrameRendersLeaveTheCacheAsStreamingThemWould) {
+  const world::WorldContext ctx = walk_context();
+  const size_t bound = 12;
+  const int steps = 24;
+  WorldSchedule queued(ctx, bound), alone(ctx, bound);  // all cameras queued (prefetching), or one at a time
+  CaptureQueue& queue = queued.ecs().resource<CaptureQueue>();
+  for (int k = 0; k <= steps; ++k) queue.cameras.push_back(queued.ecs().spawn(trail_frame(ctx, k, steps)));
+  size_t prefetched = 0;
+  for (int k = 0; k <= steps; ++k) {
+    queued.ecs().run_phases(Phase::Stream, Phase::Prepare);
+    const std::vector<ChunkCoord> started = queued.ecs().resource<systems::PrefetchedChunks>().started();
+    if (k < steps) {  // what the next frame's view lacks, made while this frame renders
+      const Camera& next = trail_frame(ctx, k + 1, steps).camera;
+      EXPECT_EQ(started, queued.ecs().resource<world::ChunkCache>().missing(
+                             systems::capture_chunks(next, ctx.chunk_size(), 0.0))) << "step " << k;
+    } else {
+      EXPECT_TRUE(started.empty());  // no camera follows the last
+    }
+    prefetched += started.size();
+    alone.ecs().resource<CaptureQueue>().cameras = {alone.ecs().spawn(trail_frame(ctx, k, steps))};
+    alone.ecs().resource<CaptureQueue>().next = 0;
+    alone.ecs().run_phases(Phase::Stream, Phase::Prepare);
+    const world::ChunkCache& a = queued.ecs().resource<world::ChunkCache>();
+    const world::ChunkCache& b = alone.ecs().resource<world::ChunkCache>();
+    ASSERT_EQ(a.recency(), b.recency()) << "step " << k;
+    ASSERT_EQ(a.generated(), b.generated()) << "step " << k;
+    for (ChunkCoord c : a.recency()) ASSERT_EQ(world::chunk_hash(*a.find(c)), world::chunk_hash(*b.find(c)));
+  }
+  EXPECT_GT(prefetched, 10u);
+}
+
+TEST(Schedule, PrefetchedChunksAreHandedOverOnlyWhenTheyAreExactlyTheOnesWanted) {
+  const world::WorldContext ctx = walk_context();
+  systems::PrefetchedChunks prefetched;
+  EXPECT_TRUE(prefetched.take({{0, 0}}).empty());  // nothing started
+  prefetched.start(ctx, {{0, 0}, {1, 0}});
+  EXPECT_TRUE(prefetched.take({{0, 0}}).empty());  // another set: dropped
+  EXPECT_TRUE(prefetched.started().empty());
+  prefetched.start(ctx, {{0, 0}, {1, 0}});
+  const auto got = prefetched.take({{0, 0}, {1, 0}});
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(world::chunk_hash(*got[1]), world::chunk_hash(world::drawable_chunk(ctx, {1, 0})));
+  EXPECT_EQ(got[1]->terrain_lod.positions, world::drawable_chunk(ctx, {1, 0}).terrain_lod.positions);
 }
 
 }  // namespace

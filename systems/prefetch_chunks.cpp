@@ -1,0 +1,73 @@
+#include "systems/prefetch_chunks.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <utility>
+
+#include "components/camera.hpp"
+#include "components/phase.hpp"
+#include "components/world_source.hpp"
+#include "systems/aim_camera.hpp"
+#include "systems/render_views.hpp"
+#include "world/chunk_cache.hpp"
+#include "world/plan_captures.hpp"
+
+namespace silva::systems {
+
+PrefetchedChunks::~PrefetchedChunks() { drop_batch(); }
+
+void PrefetchedChunks::drop_batch() {
+  if (!batch_) return;
+  try {
+    batch_->work.wait();
+  } catch (...) {  // NOLINT(bugprone-empty-catch): dropped chunks; the Stream phase makes its own and reports
+  }
+  batch_.reset();
+}
+
+void PrefetchedChunks::start(const world::WorldContext& ctx, std::vector<ChunkCoord> coords) {
+  drop_batch();
+  batch_ = std::make_unique<Batch>();
+  Batch& b = *batch_;
+  b.coords = std::move(coords);
+  b.contents.assign(b.coords.size(), nullptr);
+  b.work.run([&b, &ctx] {
+    tbb::parallel_for(size_t(0), b.coords.size(), [&](size_t k) {
+      b.contents[k] = std::make_shared<ChunkContent>(world::drawable_chunk(ctx, b.coords[k]));
+    });
+  });
+}
+
+std::vector<std::shared_ptr<ChunkContent>> PrefetchedChunks::take(const std::vector<ChunkCoord>& wanted) {
+  if (!batch_) return {};
+  const std::unique_ptr<Batch> b = std::move(batch_);
+  b->work.wait();
+  if (wanted.empty() || wanted != b->coords) return {};
+  return std::move(b->contents);
+}
+
+const std::vector<ChunkCoord>& PrefetchedChunks::started() const {
+  static const std::vector<ChunkCoord> none;
+  return batch_ ? batch_->coords : none;
+}
+
+void install_prefetch_chunks(ecs::World& world) {
+  if (!world.has_resource<PrefetchedChunks>()) world.set_resource(PrefetchedChunks{});
+  world.system("prefetch_chunks")
+      .phase(Phase::Prepare)
+      .after("prepare_scene")
+      .reads_resource<WorldSource, CaptureQueue, CaptureSettings, world::ChunkCache>()
+      .writes_resource<PrefetchedChunks>()
+      .reads<world::PlannedFrame>()
+      .run([](ecs::SystemContext& sys) {
+        const CaptureQueue& queue = sys.resource<const CaptureQueue>();
+        if (queue.active.is_null() || !queue.pending()) return;
+        const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
+        const Camera& next = sys.get<const world::PlannedFrame>(queue.cameras[queue.next]).camera;
+        std::vector<ChunkCoord> missing = sys.resource<const world::ChunkCache>().missing(
+            capture_chunks(next, ctx.chunk_size(), lidar_reach(sys.resource<const CaptureSettings>())));
+        if (!missing.empty()) sys.resource<PrefetchedChunks>().start(ctx, std::move(missing));
+      });
+}
+
+}  // namespace silva::systems
