@@ -21,6 +21,7 @@ constexpr Factory kFactories[] = {
     {AssetKind::Grass, "grass", 20, generate_grass},
     {AssetKind::Grass, "grass_tall", 20, generate_tall_grass},
     {AssetKind::Fern, "fern", 20, generate_fern},
+    {AssetKind::Fern, "wood_sorrel", 20, generate_wood_sorrel},
     {AssetKind::Shrub, "bilberry", 20, generate_bilberry},
     {AssetKind::Shrub, "hazel", 20, generate_hazel},
     {AssetKind::Shrub, "bramble", 20, generate_bramble},

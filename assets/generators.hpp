@@ -43,6 +43,15 @@ GeneratedAsset generate_tall_grass(Rng& rng);
 /// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
 /// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);
+/// Wood sorrel: a carpet patch of kMinWoodSorrelLeaves-40 trifoliate leaves spreading flat atop
+/// 5-13 cm stalks, each leaf kWoodSorrelLeafSpan across (x 0.8-1.2); ground vegetation, grown as a fern-layer herb.
+GeneratedAsset generate_wood_sorrel(Rng& rng);
+/// Fewest leaves of a wood sorrel patch.
+inline constexpr int kMinWoodSorrelLeaves = 16;
+/// Range of a wood sorrel leaf's nominal span across its three leaflets, metres (Oxalis acetosella: 2-4.5 cm).
+inline constexpr float kWoodSorrelLeafSpan[2] = {0.028f, 0.042f};
+/// Share of its card's side a wood sorrel leaf spans (the mask's leaflets reach 0.43 from the centre).
+inline constexpr float kWoodSorrelLeafFill = 0.86f;
 /// Bilberry: dense dwarf shrub 0.2-0.5 m, 14-27 green ribbon stems carrying small-leaf cards.
 GeneratedAsset generate_bilberry(Rng& rng);
 /// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side

@@ -144,6 +144,29 @@ std::shared_ptr<const AlphaMask> bramble_leaf_mask() {
   return mask;
 }
 
+std::shared_ptr<const AlphaMask> wood_sorrel_leaf_mask() {
+  static const auto mask = [] {
+    const Vec2f hub(0.5f, 0.5f);
+    std::vector<Stroke> s;
+    for (int i = 0; i < 3; ++i) {  // each leaflet a pair of round lobes: broad, notched at the tip
+      const float deg = 120.0f * float(i) + 8.0f;
+      const auto shade = uint8_t(160 + 40 * i);  // leaflets of one leaf differ a little in brightness
+      for (float lobe : {-19.0f, 19.0f})
+        s.push_back({hub, stroke_towards(hub, deg + lobe, 0.43f), 0.12f, 0, Shape::Round, shade});
+    }
+    return rasterise_strokes(s, kWoodSorrelMaskSize, kWoodSorrelMaskSize);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> herb_stalk_mask() {
+  static const auto mask = [] {
+    const float h = float(kHerbStalkMaskHeight) / float(kHerbStalkMaskWidth);
+    return rasterise_strokes({{{0.5f, h}, {0.5f, 0.0f}, 0.17f, 0.12f}}, kHerbStalkMaskWidth, kHerbStalkMaskHeight);
+  }();
+  return mask;
+}
+
 std::shared_ptr<const AlphaMask> litter_leaves_mask() {
   static const auto mask = [] {
     std::vector<Stroke> s;

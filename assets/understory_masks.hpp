@@ -29,6 +29,20 @@ std::shared_ptr<const AlphaMask> hazel_leaves_mask();
 /// Bramble: one compound leaf of five toothed ovate leaflets on a stalk from v = 1 (64 x 64).
 std::shared_ptr<const AlphaMask> bramble_leaf_mask();
 
+/// Texels per side of the wood sorrel leaf mask.
+inline constexpr int kWoodSorrelMaskSize = 256;
+
+/// Wood sorrel: one trifoliate leaf from the card centre, three broad obcordate leaflets (each two
+/// round lobes with a notch at the tip) 120 degrees apart, each its own brightness (alpha 160-240).
+std::shared_ptr<const AlphaMask> wood_sorrel_leaf_mask();
+
+/// Width and height (texels) of the herb stalk mask.
+inline constexpr int kHerbStalkMaskWidth = 32, kHerbStalkMaskHeight = 256;
+
+/// A herb's leaf stalk: one line along v, a third of the card wide at the base (v = 1) tapering to a
+/// quarter at the top, on a narrow card (a stalk drawn as a masked card keeps a card-only asset at one level).
+std::shared_ptr<const AlphaMask> herb_stalk_mask();
+
 /// Leaf litter: a few scattered oval and lobed fallen leaves (64 x 64).
 std::shared_ptr<const AlphaMask> litter_leaves_mask();
 

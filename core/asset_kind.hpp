@@ -11,7 +11,7 @@ enum class AssetKind : uint8_t {
   DeadTree,
   Stump,
   Grass,
-  Fern,
+  Fern,         ///< The fern layer of ground vegetation: ferns and forest herbs (wood sorrel).
   Shrub,
   Rock,
   Log,

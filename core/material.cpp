@@ -11,7 +11,8 @@ constexpr const char* kNames[int(Material::Count)] = {
     "log_bark", "broken_wood", "moss", "leaf_litter",
     "bark_spruce", "bark_pine", "bark_larch", "bark_beech", "bark_birch", "bark_oak",
     "needles_spruce", "needles_pine", "needles_larch", "leaves_beech", "leaves_birch", "leaves_oak",
-    "autumn_leaves", "autumn_needles", "bare_twigs", "autumn_grass", "winter_grass", "dead_bracken", "soil"};
+    "autumn_leaves", "autumn_needles", "bare_twigs", "autumn_grass", "winter_grass", "dead_bracken", "soil",
+    "herb"};
 }  // namespace
 
 const char* material_name(Material m) { return kNames[int(m)]; }

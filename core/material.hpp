@@ -41,6 +41,7 @@ enum class Material : uint8_t {
   WinterGrass,    ///< Grass in winter: dry and pale.
   DeadBracken,    ///< Fern fronds in winter: dull grey-brown standing dead bracken.
   Soil,           ///< Bare forest soil: dark humus, paler mineral patches, small stones (root plates, clods).
+  Herb,           ///< Soft leaves of forest herbs (wood sorrel): fresh light green in every season.
   Count,
 };
 

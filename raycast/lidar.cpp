@@ -59,6 +59,7 @@ float nir_reflectivity(Material m) {
     case Material::Needles: case Material::Leaves: case Material::Grass: case Material::Fern:
     case Material::ShrubLeaves: case Material::NeedlesSpruce: case Material::NeedlesPine:
     case Material::NeedlesLarch: case Material::LeavesBeech: case Material::LeavesBirch: case Material::LeavesOak:
+    case Material::Herb:
       return 0.55f;  // green foliage reflects strongly in the near infrared
     case Material::Moss:
       return 0.45f;

@@ -134,6 +134,7 @@ bool plain_foliage_base(Material m, Vec3f& base) {
     case Material::AutumnNeedles: base = Vec3f(0.36f, 0.25f, 0.045f); return true;
     case Material::BareTwigs: base = Vec3f(0.11f, 0.095f, 0.08f); return true;
     case Material::DeadBracken: base = Vec3f(0.15f, 0.115f, 0.085f); return true;
+    case Material::Herb: base = Vec3f(0.085f, 0.2f, 0.05f); return true;
     default: return false;
   }
 }
@@ -184,7 +185,8 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::LeavesOak:
     case Material::AutumnNeedles:
     case Material::BareTwigs:
-    case Material::DeadBracken:  // plain foliage, returned above
+    case Material::DeadBracken:
+    case Material::Herb:  // plain foliage, returned above
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);

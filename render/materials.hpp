@@ -166,6 +166,7 @@ inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterial
     {0.75f, 0.04f, 0.4f},  // WinterGrass
     {0.75f, 0.04f, 0.3f},  // DeadBracken
     {0.9f, 0.04f, 0.0f},  // Soil
+    {0.5f, 0.04f, 1.0f},  // Herb
 }};
 
 /// The response of material `m`.

@@ -16,6 +16,7 @@ SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t 
     const std::vector<std::string>* grown = asset.kind == AssetKind::ConiferTree     ? &forest.conifers
                                             : asset.kind == AssetKind::BroadleafTree ? &forest.broadleaves
                                             : asset.kind == AssetKind::Shrub         ? &forest.shrubs
+                                            : asset.kind == AssetKind::Fern          ? &forest.herbs
                                                                                      : nullptr;
     if (grown && asset.source && !grows(*grown, group)) continue;  // user assets always grow
     auto& kind_names = names[size_t(asset.kind)];

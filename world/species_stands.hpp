@@ -25,8 +25,8 @@ struct SpeciesStands {
   double offset_x = 0, offset_y = 0;  ///< Seeded offset of the stand noise.
 };
 
-/// Groups `library`'s assets and seeds the stand field from `seed`; conifers, broadleaves and shrubs
-/// only of the species `forest` grows (every one by default).
+/// Groups `library`'s assets and seeds the stand field from `seed`; conifers, broadleaves, shrubs and
+/// fern-layer herbs only of the species `forest` grows (every one by default).
 SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed,
                                   const ForestType& forest = forest_types().front());
 

@@ -26,7 +26,7 @@ std::vector<MeshPart> cards(const Mesh& m) {
 }
 
 TEST(SeasonDress, ShapesNeverDependOnTheSeason) {
-  for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern"}) {
+  for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern", "wood_sorrel"}) {
     const Mesh summer = variant(prefix, Season::Summer);
     for (Season s : {Season::Autumn, Season::Winter}) {
       const Mesh dressed = variant(prefix, s);
@@ -55,6 +55,14 @@ TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
   for (const MeshPart& p : cards(variant("fern", Season::Winter))) EXPECT_EQ(p.material, Material::DeadBracken);
   ASSERT_FALSE(cards(variant("grass", Season::Winter)).empty());
   for (const MeshPart& p : cards(variant("grass", Season::Winter))) EXPECT_EQ(p.material, Material::WinterGrass);
+}
+
+TEST(SeasonDress, WoodSorrelStaysGreenThroughTheYear) {
+  for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
+    const Mesh m = variant("wood_sorrel", s);
+    ASSERT_FALSE(m.parts.empty());
+    for (const MeshPart& p : m.parts) EXPECT_EQ(p.material, Material::Herb);
+  }
 }
 
 TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {

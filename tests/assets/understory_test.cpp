@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "assets/factory.hpp"
+#include "assets/generators.hpp"
 #include "assets/rock_shape.hpp"
 #include "assets/understory_masks.hpp"
 
@@ -129,6 +131,71 @@ TEST(Understory, ThinStemsAreRibbonsNotTubes) {
           EXPECT_GT((a - b).norm(), 0.005f) << prefix;
         }
       }
+  }
+}
+
+/// Spans (metres) of the leaves of a wood sorrel mesh's card part, and the heights of their centres.
+void wood_sorrel_leaves(const Mesh& m, const MeshPart& cards, std::vector<float>& spans, std::vector<float>& heights) {
+  for (uint32_t i = cards.first_index; i < cards.first_index + cards.index_count; i += 6) {
+    float diagonal = 0;
+    Vec3f centre = Vec3f::Zero();
+    for (uint32_t a = i; a < i + 6; ++a) {
+      centre += m.positions[m.indices[a]] / 6.0f;
+      for (uint32_t b = i; b < i + 6; ++b)
+        diagonal = std::max(diagonal, (m.positions[m.indices[a]] - m.positions[m.indices[b]]).norm());
+    }
+    spans.push_back(diagonal / std::sqrt(2.0f) * kWoodSorrelLeafFill);
+    heights.push_back(centre.z());
+  }
+}
+
+TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
+  std::vector<float> spans;
+  for (uint32_t v = 0; v < factory("wood_sorrel").variants; ++v) {
+    const Asset a = make_asset(factory("wood_sorrel"), kDefaultAssetSeed, v);
+    const Mesh& m = a.lods()[0];
+    EXPECT_EQ(a.role, Role::GroundVegetation);
+    EXPECT_EQ(a.proxy.shape, CollisionProxy::Shape::None);
+    EXPECT_EQ(a.lods().size(), 1u);
+    EXPECT_LE(m.triangle_count(), 250u) << a.name;
+    std::vector<float> heights;
+    for (const MeshPart& p : m.parts) {
+      EXPECT_EQ(p.role, Role::GroundVegetation);
+      EXPECT_EQ(p.material, Material::Herb);
+      ASSERT_TRUE(p.mask == wood_sorrel_leaf_mask() || p.mask == herb_stalk_mask());  // cards only: one level
+      if (p.mask == wood_sorrel_leaf_mask()) wood_sorrel_leaves(m, p, spans, heights);
+    }
+    EXPECT_GE(heights.size(), size_t(kMinWoodSorrelLeaves)) << a.name;
+    EXPECT_LE(heights.size(), 40u) << a.name;
+    for (float h : heights) {
+      EXPECT_GT(h, 0.015f) << a.name;  // held up on its stalk, never lying in the litter
+      EXPECT_LT(h, 0.15f) << a.name;
+    }
+  }
+  // Oxalis acetosella: leaflets 1-2 cm long, a leaf 2-4.5 cm across.
+  std::sort(spans.begin(), spans.end());
+  EXPECT_GE(spans.front(), 0.02f);
+  EXPECT_LE(spans.back(), 0.051f);
+  EXPECT_GT(spans[spans.size() / 2], 0.03f);
+  EXPECT_LT(spans[spans.size() / 2], 0.04f);
+}
+
+TEST(Understory, WoodSorrelLeavesAreThreeNotchedLeaflets) {
+  const AlphaMask& m = *wood_sorrel_leaf_mask();
+  ASSERT_EQ(m.width, kWoodSorrelMaskSize);
+  ASSERT_EQ(m.height, kWoodSorrelMaskSize);
+  const auto opaque = [&](float deg, float r) {  // mask units from the centre, 0 degrees = up the mask
+    const float a = deg * 3.14159265f / 180.0f;
+    const int x = int((0.5f + r * std::sin(a)) * float(m.width)), y = int((0.5f - r * std::cos(a)) * float(m.height));
+    return m.alpha[size_t(y * m.width + x)] != 0;
+  };
+  for (int i = 0; i < 3; ++i) {
+    const float axis = 120.0f * float(i) + 8.0f;
+    EXPECT_TRUE(opaque(axis, 0.2f)) << i;          // the leaflet's body
+    EXPECT_TRUE(opaque(axis - 19.0f, 0.33f)) << i;  // both lobes
+    EXPECT_TRUE(opaque(axis + 19.0f, 0.33f)) << i;
+    EXPECT_FALSE(opaque(axis, 0.42f)) << i;         // the notch between them at the tip
+    EXPECT_FALSE(opaque(axis + 60.0f, 0.3f)) << i;  // the gap to the next leaflet
   }
 }
 

@@ -50,6 +50,17 @@ def skew_exp(w, dt):
     return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
 
 
+def label_edges(labels):
+    """Pixels of a label image with a differently labelled pixel among their 8 neighbours."""
+    padded = np.pad(labels, 1, mode="edge")
+    h, w = labels.shape
+    edges = np.zeros(labels.shape, bool)
+    for dy in (0, 1, 2):
+        for dx in (0, 1, 2):
+            edges |= padded[dy:dy + h, dx:dx + w] != labels
+    return edges
+
+
 def main():
     shutil.rmtree(WORK, ignore_errors=True)
     one = generate("one", 1, "none")
@@ -115,9 +126,11 @@ def main():
     assert kalibr["gyroscope_noise_density"] == 0 and kalibr["accelerometer_random_walk"] == 0, kalibr
 
     # Optical flow: KITTI's valid bit is the mask's 0, and following the .flo vectors from a valid pixel lands on a
-    # pixel of the other frame with the same semantic label (>= 99 %: the rest are label edges between pixel centres).
+    # pixel of the other frame with the same semantic label: >= 99.5 % of the valid pixels away from label edges
+    # (neither the pixel nor where it lands has a differently labelled neighbour; at an edge, a vector landing
+    # between pixel centres may round to the other side), and >= 98 % of all of them.
     for direction, step, frames in (("forward", 1, range(19)), ("backward", -1, range(1, 20))):
-        agree = total = 0
+        agree = total = inner_agree = inner_total = 0
         for t in frames:
             kitti = cv2.imread(os.path.join(seq, f"flow_{direction}", f"{t:06d}.png"), cv2.IMREAD_UNCHANGED)
             mask = cv2.imread(os.path.join(seq, f"flow_{direction}_mask", f"{t:06d}.png"), cv2.IMREAD_UNCHANGED)
@@ -133,11 +146,18 @@ def main():
             ys, xs = np.nonzero(valid)
             x1 = np.floor(xs + 0.5 + flo[ys, xs, 0]).astype(int)
             y1 = np.floor(ys + 0.5 + flo[ys, xs, 1]).astype(int)
-            agree += int(np.sum(here[ys, xs] == there[y1, x1]))
+            same = here[ys, xs] == there[y1, x1]
+            inner = ~label_edges(here)[ys, xs] & ~label_edges(there)[y1, x1]
+            agree += int(np.sum(same))
             total += len(ys)
+            inner_agree += int(np.sum(same & inner))
+            inner_total += int(np.sum(inner))
         assert total > 0.4 * 19 * 320 * 240, f"{direction}: only {total} valid flow pixels"
-        assert agree / total >= 0.99, f"{direction} flow carries {agree / total:.4f} of the labels, needs 0.99"
-        print(f"{direction} flow carries {agree / total:.4f} of the labels of {total} valid pixels")
+        assert inner_agree / inner_total >= 0.995, \
+            f"{direction} flow carries {inner_agree / inner_total:.4f} of the labels away from label edges, needs 0.995"
+        assert agree / total >= 0.98, f"{direction} flow carries {agree / total:.4f} of the labels, needs 0.98"
+        print(f"{direction} flow carries {agree / total:.4f} of the labels of {total} valid pixels, "
+              f"{inner_agree / inner_total:.4f} of the {inner_total} away from label edges")
     assert not os.path.exists(os.path.join(seq, "flow_forward", "000019.png"))
     assert not os.path.exists(os.path.join(seq, "flow_backward", "000000.png"))
 

@@ -80,6 +80,7 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
       const std::vector<std::string>* list = kind == AssetKind::ConiferTree     ? &t.conifers
                                              : kind == AssetKind::BroadleafTree ? &t.broadleaves
                                              : kind == AssetKind::Shrub         ? &t.shrubs
+                                             : kind == AssetKind::Fern          ? &t.herbs
                                                                                 : nullptr;
       EXPECT_TRUE(list == nullptr || grows(*list, species)) << species;
       trees += kind == AssetKind::ConiferTree || kind == AssetKind::BroadleafTree ? n : 0;
@@ -92,6 +93,10 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
   for (const auto& [key, n] : mixed)
     if (key.first == AssetKind::ConiferTree || key.first == AssetKind::BroadleafTree) species.insert(key.second);
   EXPECT_EQ(species.size(), 6u);
+  // Wood sorrel grows beside the ferns in the mixed stand, not on the pine heath.
+  EXPECT_GT(mixed.count({AssetKind::Fern, "wood_sorrel"}), 0u);
+  EXPECT_GT(mixed.count({AssetKind::Fern, "fern"}), 0u);
+  EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "wood_sorrel"));
 }
 
 }  // namespace
