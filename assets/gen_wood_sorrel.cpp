@@ -17,8 +17,8 @@ constexpr float kStalkCardWidth = 0.004f;
 GeneratedAsset generate_wood_sorrel(Rng& rng) {
   constexpr float kPi = std::numbers::pi_v<float>;
   const float height = rng.range(0.05f, 0.13f);  // the tallest leaf's stalk
-  const float spread = rng.range(0.08f, 0.2f);   // patch radius
-  const int count = kMinWoodSorrelLeaves + int(rng.below(25));
+  const float spread = rng.range(0.12f, 0.32f);  // patch radius
+  const int count = kMinWoodSorrelLeaves + int(rng.below(51));
   std::vector<std::pair<Vec3f, Vec3f>> stalks;  // base, top
   for (int i = 0; i < count; ++i) {
     const float az = rng.range(0.0f, 2.0f * kPi);

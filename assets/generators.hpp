@@ -43,11 +43,11 @@ GeneratedAsset generate_tall_grass(Rng& rng);
 /// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
 /// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);
-/// Wood sorrel: a carpet patch of kMinWoodSorrelLeaves-40 trifoliate leaves spreading flat atop
+/// Wood sorrel: a carpet patch of kMinWoodSorrelLeaves-80 trifoliate leaves spreading flat atop
 /// 5-13 cm stalks, each leaf kWoodSorrelLeafSpan across (x 0.8-1.2); ground vegetation, grown as a fern-layer herb.
 GeneratedAsset generate_wood_sorrel(Rng& rng);
 /// Fewest leaves of a wood sorrel patch.
-inline constexpr int kMinWoodSorrelLeaves = 16;
+inline constexpr int kMinWoodSorrelLeaves = 30;
 /// Range of a wood sorrel leaf's nominal span across its three leaflets, metres (Oxalis acetosella: 2-4.5 cm).
 inline constexpr float kWoodSorrelLeafSpan[2] = {0.028f, 0.042f};
 /// Share of its card's side a wood sorrel leaf spans (the mask's leaflets reach 0.43 from the centre).

@@ -157,7 +157,7 @@ TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
     EXPECT_EQ(a.role, Role::GroundVegetation);
     EXPECT_EQ(a.proxy.shape, CollisionProxy::Shape::None);
     EXPECT_EQ(a.lods().size(), 1u);
-    EXPECT_LE(m.triangle_count(), 250u) << a.name;
+    EXPECT_LE(m.triangle_count(), 320u) << a.name;
     std::vector<float> heights;
     for (const MeshPart& p : m.parts) {
       EXPECT_EQ(p.role, Role::GroundVegetation);
@@ -166,7 +166,7 @@ TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
       if (p.mask == wood_sorrel_leaf_mask()) wood_sorrel_leaves(m, p, spans, heights);
     }
     EXPECT_GE(heights.size(), size_t(kMinWoodSorrelLeaves)) << a.name;
-    EXPECT_LE(heights.size(), 40u) << a.name;
+    EXPECT_LE(heights.size(), 80u) << a.name;
     for (float h : heights) {
       EXPECT_GT(h, 0.015f) << a.name;  // held up on its stalk, never lying in the litter
       EXPECT_LT(h, 0.15f) << a.name;
