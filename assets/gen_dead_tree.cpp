@@ -15,6 +15,7 @@ TreeLook dead_look(bool twigs) {
   look.cards = {.mask = nullptr, .family = bare_twig_spray, .material = Material::BarkDead, .role = Role::DeadTree,
                 .style = CardStyle::Spray, .half = 0.3f, .spacing = 0.4f, .start = 0.2f, .droop = 0.1f,
                 .level = 2, .max_cards = 800};
+  look.torn_ends = true;
   return look;
 }
 

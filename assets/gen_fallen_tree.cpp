@@ -44,6 +44,7 @@ GeneratedAsset generate_fallen_tree(Rng& rng) {
   const Skeleton s = lay_down(dead_skeleton(length, r0, top, rng), -0.5f * length * top);
   MeshBuilder b;
   TreeLook look{Material::LogBark, Role::Obstacle, false, {}};  // fallen wood: furrowed, mossy on top
+  look.torn_ends = true;
   mesh_tree(b, s, look, rng);
   const auto& trunk = s.branches.front().nodes;
   b.begin_part(Role::Obstacle, Material::Wood);  // the broken end

@@ -27,8 +27,8 @@ GeneratedAsset generate_beech(Rng& rng);
 GeneratedAsset generate_birch(Rng& rng);
 /// Pedunculate oak, sapling to mature (1-26 m).
 GeneratedAsset generate_oak(Rng& rng);
-/// Dead snag: 8-20 m grown trunk, branches mostly broken off short, most with a snapped top
-/// (splinter and wood disc), 70 % with bare twig cards.
+/// Dead snag: 8-20 m grown trunk, branches mostly broken off short (splintered ends), most with a
+/// snapped top (splinter and wood disc), 70 % with bare twig cards.
 GeneratedAsset generate_dead_tree(Rng& rng);
 /// Fallen dead tree lying along X (centred on the origin), 3.5-14 m, with its torn-up root plate
 /// (soil disc and roots) at the -X end; obstacle role, capsule proxy along the trunk.

@@ -48,7 +48,8 @@ float TubeLobes::ridge(float a) const {
   return c * c * c * c;
 }
 
-void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height, const TubeLobes& lobes) {
+void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height, const TubeLobes& lobes,
+              std::vector<Vec3f>* end_ring) {
   const size_t n = nodes.size();
   const float step = 2.0f * std::numbers::pi_v<float> / float(segments);  // angle between ring points
   std::vector<uint32_t> prev_ring, ring;
@@ -71,6 +72,8 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, flo
     for (int k = 0; k <= segments; ++k) {
       const float a = 2.0f * std::numbers::pi_v<float> * float(k % segments) / float(segments);
       const Vec3f radial = std::cos(a) * u + std::sin(a) * v;
+      if (end_ring && i + 1 == n && k < segments)
+        end_ring->push_back(nodes[i].p + nodes[i].r * (1.0f + nodes[i].lobe * lobes.ridge(a)) * radial);
       if (nodes[i].lobe == 0.0f) {
         ring.push_back(b.vertex(nodes[i].p + nodes[i].r * radial, radial + slope * t,
                                 Vec2f(float(k) / float(segments), tex_v)));

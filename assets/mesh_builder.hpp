@@ -46,9 +46,10 @@ struct TubeLobes {
 /// Adds a closed-side tube along a polyline (>= 2 nodes) with `segments` sides; smooth normals
 /// account for the taper and the lobes; u goes around (seam duplicated), v along the length in
 /// metres / 2, or, when `v_height` > 0, v = the node's z / v_height (a tree's height fraction, for
-/// bark by height).
+/// bark by height). With `end_ring`, its last ring's `segments` points (counter-clockwise about the tube's
+/// direction at its end) are written there.
 void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, float v_height = 0,
-              const TubeLobes& lobes = {});
+              const TubeLobes& lobes = {}, std::vector<Vec3f>* end_ring = nullptr);
 
 /// Adds a flat disc (fan) of `segments` sides facing `normal`.
 void add_disc(MeshBuilder& b, const Vec3f& center, const Vec3f& normal, float radius, int segments);

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "assets/root_flare.hpp"
+#include "assets/wood_parts.hpp"
 
 namespace silva::assets {
 
@@ -96,23 +97,20 @@ CollisionProxy trunk_proxy(const Skeleton& s) {
   return cylinder_proxy(point_along(trunk, breast).r, top);
 }
 
-void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng) {
-  float height = 0.1f;
-  for (const Branch& br : s.branches)
-    for (const TubeNode& n : br.nodes) height = std::max(height, n.p.z());
-  b.begin_part(look.bark_role, look.bark);
-  int tube_triangles = 0;
-  bool trunk_tube = false;
-  for (const Branch& br : s.branches) {
-    const std::vector<TubeNode> tube = tube_nodes(br);
-    if (tube.size() < 2) continue;
-    add_tube(b, tube, tube_sides(tube.front().r), height);
-    tube_triangles += 2 * tube_sides(tube.front().r) * int(tube.size() - 1);
-    trunk_tube = trunk_tube || &br == &s.branches.front();
-  }
-  if (trunk_tube) add_root_flare(b, s.branches.front(), look.bark, height);  // on top of the budget: at most 168 triangles
-  if (!look.foliage) return;
-  const FoliageParams& f = look.cards;
+namespace {
+
+/// A broken-off branch's end: its tube's last ring and the direction out of the wood.
+struct StubEnd {
+  std::vector<Vec3f> ring;  ///< The tube's last ring, counter-clockwise about axis.
+  Vec3f axis;               ///< Unit direction of the tube's last segment.
+};
+
+/// Range of a stub's splinters' reach, in stub radii along its axis (add_end_cap's jag).
+constexpr float kStubJag[2] = {0.5f, 1.5f};
+
+/// Adds the cards `f` along the branches of `s`, within what kTreeTriangleBudget leaves after
+/// `tube_triangles`.
+void add_cards(MeshBuilder& b, const Skeleton& s, const FoliageParams& f, int tube_triangles, Rng& rng) {
   float total = 0;
   for (const Branch& br : s.branches) total += std::max(0.0f, 1.0f - card_from(br, f)) * br.length;
   // Card counts per branch are rounded stochastically (unbiased): 100 cards of slack cover that.
@@ -133,6 +131,32 @@ void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng
       add_twig_card(b, s, f, rng, point_along(br, t).p, d.normalized(), enlarge);
     }
   }
+}
+
+}  // namespace
+
+void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng) {
+  float height = 0.1f;
+  for (const Branch& br : s.branches)
+    for (const TubeNode& n : br.nodes) height = std::max(height, n.p.z());
+  b.begin_part(look.bark_role, look.bark);
+  int tube_triangles = 0;
+  bool trunk_tube = false;
+  std::vector<StubEnd> stubs;
+  for (const Branch& br : s.branches) {
+    const std::vector<TubeNode> tube = tube_nodes(br);
+    if (tube.size() < 2) continue;
+    const bool stub = look.torn_ends && br.level > 0 && tube.back().r > kMinTubeRadius;
+    if (stub) stubs.push_back({{}, (tube.back().p - tube[tube.size() - 2].p).normalized()});
+    add_tube(b, tube, tube_sides(tube.front().r), height, {}, stub ? &stubs.back().ring : nullptr);
+    tube_triangles += 2 * tube_sides(tube.front().r) * int(tube.size() - 1);
+    trunk_tube = trunk_tube || &br == &s.branches.front();
+  }
+  if (trunk_tube) add_root_flare(b, s.branches.front(), look.bark, height);  // on top of the budget: at most 168 triangles
+  if (look.foliage) add_cards(b, s, look.cards, tube_triangles, rng);
+  if (stubs.empty()) return;
+  b.begin_part(look.bark_role, Material::BrokenWood);
+  for (const StubEnd& end : stubs) add_end_cap(b, rng, end.ring, end.axis, rng.range(kStubJag[0], kStubJag[1]));
 }
 
 }  // namespace silva::assets

@@ -43,12 +43,15 @@ struct TreeLook {
   Role bark_role = Role::TreeTrunk;         ///< Tube role.
   bool foliage = true;                      ///< False: no cards at all.
   FoliageParams cards;                      ///< The cards.
+  bool torn_ends = false;                   ///< Branch stubs end in splintered broken_wood caps (dead wood).
 };
 
 /// Adds the bark part (tubes, the trunk flared and buttressed at the ground: root_flare.hpp) and the card part of `s` to `b`;
 /// cards whose centre would lie inside the trunk are left out, and the card spacing grows so that
 /// tubes and cards together stay within kTreeTriangleBudget (the buttressed foot, at most 168
-/// triangles, comes on top, so it leaves the crown as it was).
+/// triangles, comes on top, so it leaves the crown as it was). With look.torn_ends, every branch
+/// tube that ends thicker than kMinTubeRadius (a broken-off stub) gets a splintered end cap in a
+/// broken_wood part, on top of the budget (5 triangles per tube side), drawn after the cards.
 void mesh_tree(MeshBuilder& b, const Skeleton& s, const TreeLook& look, Rng& rng);
 
 /// The tree's collision proxy: a vertical cylinder of the trunk radius at breast height
