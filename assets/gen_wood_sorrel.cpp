@@ -1,6 +1,7 @@
-#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "assets/generators.hpp"
 #include "assets/shrub_parts.hpp"

@@ -72,8 +72,6 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, flo
     for (int k = 0; k <= segments; ++k) {
       const float a = 2.0f * std::numbers::pi_v<float> * float(k % segments) / float(segments);
       const Vec3f radial = std::cos(a) * u + std::sin(a) * v;
-      if (end_ring && i + 1 == n && k < segments)
-        end_ring->push_back(nodes[i].p + nodes[i].r * (1.0f + nodes[i].lobe * lobes.ridge(a)) * radial);
       if (nodes[i].lobe == 0.0f) {
         ring.push_back(b.vertex(nodes[i].p + nodes[i].r * radial, radial + slope * t,
                                 Vec2f(float(k) / float(segments), tex_v)));
@@ -96,6 +94,8 @@ void add_tube(MeshBuilder& b, std::span<const TubeNode> nodes, int segments, flo
       }
     std::swap(prev_ring, ring);
   }
+  if (end_ring)
+    for (int k = 0; k < segments; ++k) end_ring->push_back(b.position(prev_ring[size_t(k)]));
 }
 
 void add_disc(MeshBuilder& b, const Vec3f& center, const Vec3f& normal, float radius, int segments) {

@@ -17,6 +17,8 @@ class MeshBuilder {
                   bool double_sided = false);
   /// Adds a vertex (normal is normalised) and returns its index.
   uint32_t vertex(const Vec3f& p, const Vec3f& n, const Vec2f& uv);
+  /// Position of vertex `index` added so far.
+  const Vec3f& position(uint32_t index) const { return mesh_.positions[index]; }
   /// Adds a counter-clockwise triangle to the current part.
   void triangle(uint32_t a, uint32_t b, uint32_t c);
   /// Finishes and returns the mesh (empty parts dropped).
