@@ -20,6 +20,7 @@ constexpr Factory kFactories[] = {
     {AssetKind::Stump, "stump", 20, generate_stump},
     {AssetKind::Grass, "grass", 20, generate_grass},
     {AssetKind::Grass, "grass_tall", 20, generate_tall_grass},
+    {AssetKind::Grass, "grass_sward", 20, generate_grass_sward},
     {AssetKind::Fern, "fern", 20, generate_fern},
     {AssetKind::Fern, "wood_sorrel", 20, generate_wood_sorrel},
     {AssetKind::Shrub, "bilberry", 20, generate_bilberry},

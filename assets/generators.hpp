@@ -40,6 +40,19 @@ GeneratedAsset generate_stump(Rng& rng);
 GeneratedAsset generate_grass(Rng& rng);
 /// Tall grass clump: 0.35-0.8 m, curved tuft cards plus cards with seed-head stalks.
 GeneratedAsset generate_tall_grass(Rng& rng);
+/// Grass sward: a patch of kGrassSwardRadius of low, dense fine grass, kGrassSwardCardsPerSquareMetre
+/// curved cards (at least kMinGrassSwardCards) of the sward mask, kGrassSwardHeight high.
+GeneratedAsset generate_grass_sward(Rng& rng);
+/// Range of a sward patch's radius, metres.
+inline constexpr float kGrassSwardRadius[2] = {0.18f, 0.42f};
+/// Range of a sward patch's card height, metres (a card 0.7-1 of it; its blades 0.45-1 of the card).
+inline constexpr float kGrassSwardHeight[2] = {0.06f, 0.18f};
+/// Width of a sward card, metres: its mask's blades are 1.9-2.8 mm wide (woodland grasses 1-4 mm).
+inline constexpr float kGrassSwardCardWidth = 0.16f;
+/// Sward cards per square metre of patch (each carries kGrassSwardBlades blades: ~5 700 per m^2).
+inline constexpr float kGrassSwardCardsPerSquareMetre = 110.0f;
+/// Fewest cards of a sward patch.
+inline constexpr int kMinGrassSwardCards = 6;
 /// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
 /// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);

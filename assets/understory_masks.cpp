@@ -97,6 +97,23 @@ std::shared_ptr<const AlphaMask> grass_seed_mask() {
   return mask;
 }
 
+std::shared_ptr<const AlphaMask> grass_sward_mask() {
+  static const auto mask = [] {
+    const float h = float(kGrassSwardMaskHeight) / float(kGrassSwardMaskWidth);
+    std::vector<Stroke> s;
+    for (int i = 0; i < kGrassSwardBlades; ++i) {  // upright fine blades side by side, each its own shade
+      const float x = 0.06f + 0.88f * (float(i) + jitter(i, 31)) / float(kGrassSwardBlades);
+      const float lean = 30.0f * (jitter(i, 32) - 0.5f) - 16.0f * (x - 0.5f);  // edge blades lean inwards
+      const size_t first = s.size();
+      add_blade(s, {x, h}, lean, lean > 0 ? 14.0f : -14.0f, h * (0.45f + 0.55f * jitter(i, 33)),
+                kGrassSwardBladeHalfWidth[0] + (kGrassSwardBladeHalfWidth[1] - kGrassSwardBladeHalfWidth[0]) * jitter(i, 34));
+      for (size_t k = first; k < s.size(); ++k) s[k].alpha = uint8_t(150 + int(100.0f * jitter(i, 35)));
+    }
+    return rasterise_strokes(s, kGrassSwardMaskWidth, kGrassSwardMaskHeight);
+  }();
+  return mask;
+}
+
 std::shared_ptr<const AlphaMask> bilberry_leaves_mask() {
   static const auto mask = [] {
     std::vector<Stroke> s;

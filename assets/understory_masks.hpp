@@ -20,6 +20,15 @@ std::shared_ptr<const AlphaMask> grass_tuft_mask();
 /// Grass blades with two or three flowering stalks carrying seed heads (64 x 128).
 std::shared_ptr<const AlphaMask> grass_seed_mask();
 
+/// Width and height (texels) of the grass sward mask, and the blades across it.
+inline constexpr int kGrassSwardMaskWidth = 256, kGrassSwardMaskHeight = 128, kGrassSwardBlades = 52;
+/// Range of a sward blade's half-width at its base, mask units (of the mask's width).
+inline constexpr float kGrassSwardBladeHalfWidth[2] = {0.006f, 0.009f};
+
+/// A sward: kGrassSwardBlades fine upright blades side by side rising from v = 1, 0.45-1 of the
+/// mask high, each its own brightness (alpha 150-250).
+std::shared_ptr<const AlphaMask> grass_sward_mask();
+
 /// Bilberry sprigs: thin twigs with many small oval alternate leaves (64 x 64).
 std::shared_ptr<const AlphaMask> bilberry_leaves_mask();
 

@@ -6,13 +6,15 @@ import cv2
 import numpy as np
 
 
-def sheet_args(doc, scratch, out, before=False):
-    """Parses --silva, --seed (7), --scratch and --out (defaults `scratch`, `out`) for a sheet script, and with
-    `before` --before (an older silva whose crops go first in each row)."""
+def sheet_args(doc, scratch, out, before=False, extra=None):
+    """Parses --silva, --seed (7), --scratch and --out (defaults `scratch`, `out`) for a sheet script, with
+    `before` --before (an older silva whose crops go first in each row), and what extra(parser) adds."""
     parser = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--silva", default="build/silva")
     if before:
         parser.add_argument("--before", help="an older silva whose crops go first in each row")
+    if extra:
+        extra(parser)
     parser.add_argument("--seed", type=int, default=7)
     parser.add_argument("--scratch", default=scratch)
     parser.add_argument("--out", default=out)

@@ -1,9 +1,12 @@
-"""What the Python checks share: running the silva CLI, making a small dataset, and damaging copies of one."""
+"""What the Python checks share: running the silva CLI, making a small dataset, damaging copies of one, and
+finding label edges."""
 import json
 import os
 import shutil
 import subprocess
 import sys
+
+import numpy as np
 
 
 def runner(binary):
@@ -58,3 +61,14 @@ def read_bag(path):
     result = subprocess.run(["node", os.path.join(NODE_DIR, "read_bag.mjs"), path], capture_output=True, text=True)
     assert result.returncode == 0, f"{path}: the independent reader failed\n{result.stderr}"
     return json.loads(result.stdout)
+
+
+def label_edges(labels):
+    """Pixels of a label image with a differently labelled pixel among their 8 neighbours."""
+    padded = np.pad(labels, 1, mode="edge")
+    h, w = labels.shape
+    edges = np.zeros(labels.shape, bool)
+    for dy in (0, 1, 2):
+        for dx in (0, 1, 2):
+            edges |= padded[dy:dy + h, dx:dx + w] != labels
+    return edges

@@ -17,7 +17,7 @@ import sys
 import cv2
 import numpy as np
 import yaml
-from silva_cli import node_reader_missing, read_bag, runner
+from silva_cli import label_edges, node_reader_missing, read_bag, runner
 
 SILVA, WORK = sys.argv[1], sys.argv[2]
 SEED = 5150
@@ -79,13 +79,19 @@ def check_frame(seq, name):
     inside = (ur >= 0) & (ur < w)
     v, u, ur = v[inside], u[inside], ur[inside]
     seen = np.abs(right_depth[v, ur] - depth[v, u]) <= 0.02 * depth[v, u]  # not occluded in the right camera
-    agree = (right_sem[v[seen], ur[seen]] == left_sem[v[seen], u[seen]]).mean()
-    assert seen.mean() > 0.6 and agree >= 0.99, (seen.mean(), agree)
+    same = right_sem[v[seen], ur[seen]] == left_sem[v[seen], u[seen]]
+    # Away from label edges (neither pixel has a differently labelled neighbour) the label must carry over; at an
+    # edge a disparity landing between pixel centres may round to the other side, and a grass blade stands within
+    # the 2 % depth tolerance of the ground behind it.
+    inner = ~label_edges(left_sem)[v[seen], u[seen]] & ~label_edges(right_sem)[v[seen], ur[seen]]
+    agree = same.mean()
+    assert seen.mean() > 0.6 and same[inner].mean() >= 0.995 and agree >= 0.98, \
+        (seen.mean(), same[inner].mean(), agree)
     # The trail is smooth and never occluded by a 12 cm shift: there the right camera sees the same surface point.
     ontology = json.load(open(os.path.join(seq, "..", "ontology.json")))["classes"]
     trail = left_sem[v, u] == next(c["id"] for c in ontology if c["role"] == "trail")
     assert trail.sum() > 500 and seen[trail].mean() >= 0.98, (trail.sum(), seen[trail].mean())
-    return agree
+    return agree, same[inner].mean()
 
 
 def check_euroc(stereo):
@@ -244,7 +250,8 @@ def main():
     check_rosbag(stereo)
     check_resume(stereo)
     check_verify(stereo)
-    print(f"stereo ok: {len(names)} frames, label agreement through the disparity {min(agreement):.4f}")
+    print(f"stereo ok: {len(names)} frames, label agreement through the disparity {min(a for a, _ in agreement):.4f}, "
+          f"{min(i for _, i in agreement):.4f} away from label edges")
 
 
 if __name__ == "__main__":

@@ -17,7 +17,7 @@ import sys
 import cv2
 import numpy as np
 import yaml
-from silva_cli import runner
+from silva_cli import label_edges, runner
 
 SILVA, WORK = sys.argv[1], sys.argv[2]
 SEED = 4242
@@ -48,17 +48,6 @@ def skew_exp(w, dt):
     k = v / angle
     K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
     return np.eye(3) + np.sin(angle) * K + (1 - np.cos(angle)) * K @ K
-
-
-def label_edges(labels):
-    """Pixels of a label image with a differently labelled pixel among their 8 neighbours."""
-    padded = np.pad(labels, 1, mode="edge")
-    h, w = labels.shape
-    edges = np.zeros(labels.shape, bool)
-    for dy in (0, 1, 2):
-        for dx in (0, 1, 2):
-            edges |= padded[dy:dy + h, dx:dx + w] != labels
-    return edges
 
 
 def main():

@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""Contact sheet of the fern-layer herbs: one row per stand, a random view (1920x1080) that shows wood sorrel on
-the floor, at a quarter size, then a full-resolution crop of its patch, RGB. With --before, each row shows that
+"""Contact sheet of a floor plant (wood sorrel or grass swards): one row per stand, a random view (1920x1080) that
+shows the plant, at a quarter size, then a full-resolution crop of it, RGB. With --before, each row shows that
 build's view and crop of the same pose first (an older build needs its own asset library: pass a wrapper that
-sets SILVA_ASSETS; placement draws differ between the builds, so the plants around the pose differ too).
+sets SILVA_ASSETS; where placement draws differ between the builds, the plants around the pose differ too).
 
-Usage: scripts/herb_sheet.py [--silva build/silva] [--before OLD_SILVA] [--seed 7]
-                             [--scratch /tmp/silva-herbs] [--out docs/realism-herbs.jpg]
+Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|grass_sward] [--silva build/silva] [--before OLD_SILVA]
+                                     [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
+       (--out defaults to docs/realism-herbs.jpg for wood sorrel, docs/realism-grass.jpg for grass swards)
 """
 import subprocess
 
@@ -13,10 +14,16 @@ import cv2
 
 from labelled_rows import labelled_row, sheet_args, write_sheet
 
-STANDS = [  # label, settings, random view, (top, left) of the crop: chosen where seed 7 shows a patch
-    ("mixed", [], 1, (700, 180)),
-    ("spruce", ["vegetation.forest_type=spruce_plantation"], 4, (760, 100)),
-]
+PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top, left) of a crop showing it, seed 7)
+    "wood_sorrel": ("docs/realism-herbs.jpg", [
+        ("mixed", [], 1, (700, 180)),
+        ("spruce", ["vegetation.forest_type=spruce_plantation"], 4, (760, 100)),
+    ]),
+    "grass_sward": ("docs/realism-grass.jpg", [
+        ("mixed", [], 4, (730, 0)),
+        ("pine heath", ["vegetation.forest_type=pine_heath"], 0, (760, 80)),
+    ]),
+}
 TILE_W, TILE_H = 480, 270
 LABEL_W = 100
 VIEWS = 6
@@ -40,14 +47,16 @@ def tiles(view, at):
 
 
 def main():
-    args = sheet_args(__doc__, "/tmp/silva-herbs", "docs/realism-herbs.jpg", before=True)
+    args = sheet_args(__doc__, "/tmp/silva-floor-plants", None, before=True,
+                      extra=lambda p: p.add_argument("--plant", choices=sorted(PLANTS), default="wood_sorrel"))
+    sheet, stands = PLANTS[args.plant]
     rows = []
-    for k, (label, settings, view, at) in enumerate(STANDS):
+    for k, (label, settings, view, at) in enumerate(stands):
         row = tiles(render(args.silva, args.scratch / f"new{k}", args.seed, settings, view), at)
         if args.before:
             row = tiles(render(args.before, args.scratch / f"old{k}", args.seed, settings, view), at) + row
         rows.append(labelled_row(label, row, LABEL_W))
-    write_sheet(rows, args.out)
+    write_sheet(rows, args.out or sheet)
 
 
 if __name__ == "__main__":
