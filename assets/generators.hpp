@@ -65,6 +65,17 @@ inline constexpr int kMinWoodSorrelLeaves = 30;
 inline constexpr float kWoodSorrelLeafSpan[2] = {0.028f, 0.042f};
 /// Share of its card's side a wood sorrel leaf spans (the mask's leaflets reach 0.43 from the centre).
 inline constexpr float kWoodSorrelLeafFill = 0.86f;
+/// Woodruff: a carpet patch of kMinWoodruffStems-36 upright stems 7-28 cm high, each with kWoodruffLevels whorls
+/// of lanceolate leaves kWoodruffWhorlSpan across (the top whorl smaller); grown as a fern-layer herb.
+GeneratedAsset generate_woodruff(Rng& rng);
+/// Fewest stems of a woodruff patch.
+inline constexpr int kMinWoodruffStems = 16;
+/// Range of leaf whorls per woodruff stem.
+inline constexpr int kWoodruffLevels[2] = {3, 4};
+/// Range of a woodruff whorl's nominal span, metres (Galium odoratum: leaves 2-5 cm long).
+inline constexpr float kWoodruffWhorlSpan[2] = {0.05f, 0.08f};
+/// Share of its card's side a woodruff whorl spans (the mask's leaves reach 0.46 from the centre).
+inline constexpr float kWoodruffWhorlFill = 0.92f;
 /// Bilberry: dense dwarf shrub 0.2-0.5 m, 14-27 green ribbon stems carrying small-leaf cards.
 GeneratedAsset generate_bilberry(Rng& rng);
 /// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side

@@ -176,6 +176,21 @@ std::shared_ptr<const AlphaMask> wood_sorrel_leaf_mask() {
   return mask;
 }
 
+std::shared_ptr<const AlphaMask> woodruff_whorl_mask() {
+  static const auto mask = [] {
+    const Vec2f hub(0.5f, 0.5f);
+    std::vector<Stroke> s;
+    for (int i = 0; i < kWoodruffWhorlLeaves; ++i) {  // evenly round the stem, a little uneven in angle and length
+      const float deg = (360.0f / float(kWoodruffWhorlLeaves)) * (float(i) + 0.25f * (jitter(i, 41) - 0.5f));
+      const float len = 0.4f + 0.06f * jitter(i, 42);
+      const auto shade = uint8_t(150 + int(100.0f * jitter(i, 43)));
+      s.push_back({stroke_towards(hub, deg, 0.02f), stroke_towards(hub, deg, len), 0.045f, 0, Shape::Pointed, shade});
+    }
+    return rasterise_strokes(s, kWoodruffMaskSize, kWoodruffMaskSize);
+  }();
+  return mask;
+}
+
 std::shared_ptr<const AlphaMask> herb_stalk_mask() {
   static const auto mask = [] {
     const float h = float(kHerbStalkMaskHeight) / float(kHerbStalkMaskWidth);

@@ -45,6 +45,13 @@ inline constexpr int kWoodSorrelMaskSize = 256;
 /// round lobes with a notch at the tip) 120 degrees apart, each its own brightness (alpha 160-240).
 std::shared_ptr<const AlphaMask> wood_sorrel_leaf_mask();
 
+/// Texels per side of the woodruff whorl mask, and the leaves of one whorl.
+inline constexpr int kWoodruffMaskSize = 256, kWoodruffWhorlLeaves = 8;
+
+/// Woodruff: one whorl of kWoodruffWhorlLeaves narrow lanceolate leaves radiating from the card centre
+/// (reaching 0.46 of the side), each its own brightness (alpha 150-250).
+std::shared_ptr<const AlphaMask> woodruff_whorl_mask();
+
 /// Width and height (texels) of the herb stalk mask.
 inline constexpr int kHerbStalkMaskWidth = 32, kHerbStalkMaskHeight = 256;
 

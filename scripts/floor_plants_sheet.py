@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""Contact sheet of a floor plant (wood sorrel or grass swards): one row per stand, a random view (1920x1080) that
+"""Contact sheet of a floor plant (wood sorrel, woodruff or grass swards): one row per stand, a random view (1920x1080) that
 shows the plant, at a quarter size, then a full-resolution crop of it, RGB. With --before, each row shows that
 build's view and crop of the same pose first (an older build needs its own asset library: pass a wrapper that
 sets SILVA_ASSETS; where placement draws differ between the builds, the plants around the pose differ too).
 
-Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|grass_sward] [--silva build/silva] [--before OLD_SILVA]
+Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|grass_sward] [--silva build/silva] [--before OLD_SILVA]
                                      [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
-       (--out defaults to docs/realism-herbs.jpg for wood sorrel, docs/realism-grass.jpg for grass swards)
+       (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg or docs/realism-grass.jpg)
 """
 import subprocess
 
@@ -18,6 +18,10 @@ PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top,
     "wood_sorrel": ("docs/realism-herbs.jpg", [
         ("mixed", [], 1, (700, 180)),
         ("spruce", ["vegetation.forest_type=spruce_plantation"], 4, (760, 100)),
+    ]),
+    "woodruff": ("docs/realism-woodruff.jpg", [
+        ("mixed", [], 5, (610, 0)),
+        ("mixed", [], 0, (580, 120)),
     ]),
     "grass_sward": ("docs/realism-grass.jpg", [
         ("mixed", [], 4, (730, 0)),

@@ -57,12 +57,13 @@ TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
   for (const MeshPart& p : cards(variant("grass", Season::Winter))) EXPECT_EQ(p.material, Material::WinterGrass);
 }
 
-TEST(SeasonDress, WoodSorrelStaysGreenThroughTheYear) {
-  for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
-    const Mesh m = variant("wood_sorrel", s);
-    ASSERT_FALSE(m.parts.empty());
-    for (const MeshPart& p : m.parts) EXPECT_EQ(p.material, Material::Herb);
-  }
+TEST(SeasonDress, ForestHerbsStayGreenThroughTheYear) {
+  for (const char* prefix : {"wood_sorrel", "woodruff"})
+    for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
+      const Mesh m = variant(prefix, s);
+      ASSERT_FALSE(m.parts.empty()) << prefix;
+      for (const MeshPart& p : m.parts) EXPECT_EQ(p.material, Material::Herb) << prefix;
+    }
 }
 
 TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "assets/factory.hpp"
@@ -134,8 +135,9 @@ TEST(Understory, ThinStemsAreRibbonsNotTubes) {
   }
 }
 
-/// Spans (metres) of the leaves of a wood sorrel mesh's card part, and the heights of their centres.
-void wood_sorrel_leaves(const Mesh& m, const MeshPart& cards, std::vector<float>& spans, std::vector<float>& heights) {
+/// Spans (metres) of the leaves of a herb mesh's card part whose leaves span `fill` of their card's side, and
+/// the heights of their centres.
+void herb_leaves(const Mesh& m, const MeshPart& cards, float fill, std::vector<float>& spans, std::vector<float>& heights) {
   for (uint32_t i = cards.first_index; i < cards.first_index + cards.index_count; i += 6) {
     float diagonal = 0;
     Vec3f centre = Vec3f::Zero();
@@ -144,9 +146,34 @@ void wood_sorrel_leaves(const Mesh& m, const MeshPart& cards, std::vector<float>
       for (uint32_t b = i; b < i + 6; ++b)
         diagonal = std::max(diagonal, (m.positions[m.indices[a]] - m.positions[m.indices[b]]).norm());
     }
-    spans.push_back(diagonal / std::sqrt(2.0f) * kWoodSorrelLeafFill);
+    spans.push_back(diagonal / std::sqrt(2.0f) * fill);
     heights.push_back(centre.z());
   }
+}
+
+/// Expects every height in (lo, hi) metres: leaves held up on their stems, never lying in the litter.
+void expect_heights(const std::vector<float>& heights, float lo, float hi, const std::string& name) {
+  for (float h : heights) {
+    EXPECT_GT(h, lo) << name;
+    EXPECT_LT(h, hi) << name;
+  }
+}
+
+/// Expects every span within [lo, hi] metres and their median within (median_lo, median_hi).
+void expect_spans(std::vector<float> spans, float lo, float hi, float median_lo, float median_hi) {
+  ASSERT_FALSE(spans.empty());
+  std::sort(spans.begin(), spans.end());
+  EXPECT_GE(spans.front(), lo);
+  EXPECT_LE(spans.back(), hi);
+  EXPECT_GT(spans[spans.size() / 2], median_lo);
+  EXPECT_LT(spans[spans.size() / 2], median_hi);
+}
+
+/// Whether the texel of a square mask at angle `deg` (0 = up the mask) and `r` mask units from its centre is opaque.
+bool opaque_at(const AlphaMask& m, float deg, float r) {
+  const float a = deg * 3.14159265f / 180.0f;
+  const int x = int((0.5f + r * std::sin(a)) * float(m.width)), y = int((0.5f - r * std::cos(a)) * float(m.height));
+  return m.alpha[size_t(y * m.width + x)] != 0;
 }
 
 TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
@@ -163,32 +190,20 @@ TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
       EXPECT_EQ(p.role, Role::GroundVegetation);
       EXPECT_EQ(p.material, Material::Herb);
       ASSERT_TRUE(p.mask == wood_sorrel_leaf_mask() || p.mask == herb_stalk_mask());  // cards only: one level
-      if (p.mask == wood_sorrel_leaf_mask()) wood_sorrel_leaves(m, p, spans, heights);
+      if (p.mask == wood_sorrel_leaf_mask()) herb_leaves(m, p, kWoodSorrelLeafFill, spans, heights);
     }
     EXPECT_GE(heights.size(), size_t(kMinWoodSorrelLeaves)) << a.name;
     EXPECT_LE(heights.size(), 80u) << a.name;
-    for (float h : heights) {
-      EXPECT_GT(h, 0.015f) << a.name;  // held up on its stalk, never lying in the litter
-      EXPECT_LT(h, 0.15f) << a.name;
-    }
+    expect_heights(heights, 0.015f, 0.15f, a.name);
   }
-  // Oxalis acetosella: leaflets 1-2 cm long, a leaf 2-4.5 cm across.
-  std::sort(spans.begin(), spans.end());
-  EXPECT_GE(spans.front(), 0.02f);
-  EXPECT_LE(spans.back(), 0.051f);
-  EXPECT_GT(spans[spans.size() / 2], 0.03f);
-  EXPECT_LT(spans[spans.size() / 2], 0.04f);
+  expect_spans(spans, 0.02f, 0.051f, 0.03f, 0.04f);  // Oxalis acetosella: leaflets 1-2 cm long, a leaf 2-4.5 cm across
 }
 
 TEST(Understory, WoodSorrelLeavesAreThreeNotchedLeaflets) {
   const AlphaMask& m = *wood_sorrel_leaf_mask();
   ASSERT_EQ(m.width, kWoodSorrelMaskSize);
   ASSERT_EQ(m.height, kWoodSorrelMaskSize);
-  const auto opaque = [&](float deg, float r) {  // mask units from the centre, 0 degrees = up the mask
-    const float a = deg * 3.14159265f / 180.0f;
-    const int x = int((0.5f + r * std::sin(a)) * float(m.width)), y = int((0.5f - r * std::cos(a)) * float(m.height));
-    return m.alpha[size_t(y * m.width + x)] != 0;
-  };
+  const auto opaque = [&](float deg, float r) { return opaque_at(m, deg, r); };
   for (int i = 0; i < 3; ++i) {
     const float axis = 120.0f * float(i) + 8.0f;
     EXPECT_TRUE(opaque(axis, 0.2f)) << i;          // the leaflet's body
@@ -197,6 +212,40 @@ TEST(Understory, WoodSorrelLeavesAreThreeNotchedLeaflets) {
     EXPECT_FALSE(opaque(axis, 0.42f)) << i;         // the notch between them at the tip
     EXPECT_FALSE(opaque(axis + 60.0f, 0.3f)) << i;  // the gap to the next leaflet
   }
+}
+
+TEST(Understory, WoodruffStemsCarryWhorlsOfBotanicalSize) {
+  std::vector<float> spans;
+  for (uint32_t v = 0; v < factory("woodruff").variants; ++v) {
+    const Asset a = make_asset(factory("woodruff"), kDefaultAssetSeed, v);
+    const Mesh& m = a.lods()[0];
+    EXPECT_EQ(a.lods().size(), 1u);
+    ASSERT_EQ(m.parts.size(), 2u);
+    EXPECT_EQ(m.parts[0].mask, herb_stalk_mask());
+    EXPECT_EQ(m.parts[1].mask, woodruff_whorl_mask());
+    const size_t stems = m.parts[0].index_count / 6;
+    EXPECT_GE(stems, size_t(kMinWoodruffStems)) << a.name;
+    EXPECT_LE(stems, 36u) << a.name;
+    std::vector<float> heights;
+    herb_leaves(m, m.parts[1], kWoodruffWhorlFill, spans, heights);
+    EXPECT_GE(heights.size(), 3 * stems) << a.name;  // three or four whorls up every stem
+    EXPECT_LE(heights.size(), 4 * stems) << a.name;
+    expect_heights(heights, 0.02f, 0.3f, a.name);
+  }
+  // Galium odoratum: leaves 2-5 cm long, so a whorl 4-10 cm across (the top whorl smaller).
+  expect_spans(spans, 0.025f, 0.1f, 0.045f, 0.08f);
+}
+
+TEST(Understory, WoodruffWhorlsAreEightNarrowLeaves) {
+  const AlphaMask& m = *woodruff_whorl_mask();
+  ASSERT_EQ(m.width, kWoodruffMaskSize);
+  const auto opaque = [&](float deg, float r) { return opaque_at(m, deg, r); };
+  int leaves = 0;
+  for (int deg = 0; deg < 360; deg += 3) leaves += opaque(float(deg), 0.3f) && !opaque(float(deg) - 3.0f, 0.3f);
+  EXPECT_EQ(leaves, kWoodruffWhorlLeaves);  // separate leaves round the stem, 0.3 of the side out
+  int covered = 0;
+  for (int deg = 0; deg < 360; deg += 3) covered += opaque(float(deg), 0.3f);
+  EXPECT_LT(covered, 60);  // narrow: under half the circle is leaf
 }
 
 TEST(Understory, GroundCoverIsSmallCheapAndLabelledGround) {

@@ -93,10 +93,15 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
   for (const auto& [key, n] : mixed)
     if (key.first == AssetKind::ConiferTree || key.first == AssetKind::BroadleafTree) species.insert(key.second);
   EXPECT_EQ(species.size(), 6u);
-  // Wood sorrel grows beside the ferns in the mixed stand, not on the pine heath.
+  // Wood sorrel and woodruff grow beside the ferns in the mixed stand; neither on the pine heath, no woodruff
+  // under spruce.
   EXPECT_GT(mixed.count({AssetKind::Fern, "wood_sorrel"}), 0u);
+  EXPECT_GT(mixed.count({AssetKind::Fern, "woodruff"}), 0u);
   EXPECT_GT(mixed.count({AssetKind::Fern, "fern"}), 0u);
   EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "wood_sorrel"));
+  EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "woodruff"));
+  EXPECT_FALSE(grows(forest_type_of("spruce_plantation", 0).herbs, "woodruff"));
+  EXPECT_TRUE(grows(forest_type_of("beech_hall", 0).herbs, "woodruff"));
 }
 
 }  // namespace
