@@ -59,7 +59,8 @@ GeneratedAsset generate_tall_grass(Rng& rng) {
 GeneratedAsset generate_grass_sward(Rng& rng) {
   const float height = rng.range(kGrassSwardHeight[0], kGrassSwardHeight[1]);
   const float spread = rng.range(kGrassSwardRadius[0], kGrassSwardRadius[1]);
-  const int cards = std::max(kMinGrassSwardCards, int(std::lround(kGrassSwardCardsPerSquareMetre * kPi * spread * spread)));
+  const float area = kPi * spread * spread;
+  const int cards = std::max(kMinGrassSwardCards, int(std::lround(kGrassSwardCardsPerSquareMetre * area)));
   MeshBuilder b;
   b.begin_part(Role::GroundVegetation, Material::Grass, grass_sward_mask(), true);
   for (int i = 0; i < cards; ++i) {  // cards scattered over the patch, each facing its own way

@@ -53,8 +53,8 @@ GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
     add_card(b, 0.5f * (base + top), 0.5f * kStalkCardWidth * horizontal(rng.range(0.0f, 2.0f * kPi)), 0.5f * (top - base));
   b.begin_part(Role::GroundVegetation, Material::Herb, look.leaf_mask(), true);
   for (const auto& [base, top] : stalks) {  // leaves spread flat at the stem's levels, tilted a little
-    const int levels = look.levels[1] > look.levels[0] ? look.levels[0] + int(rng.below(uint32_t(look.levels[1] - look.levels[0] + 1)))
-                                                       : look.levels[0];
+    const int extra = look.levels[1] - look.levels[0];  // a fixed count (wood sorrel) draws nothing
+    const int levels = look.levels[0] + (extra > 0 ? int(rng.below(uint32_t(extra + 1))) : 0);
     for (int k = 0; k < levels; ++k) {
       const float along = 1.0f - kLevelStep * float(levels - 1 - k);
       const float scale = levels > 1 && k == levels - 1 ? kTopLevelScale : 1.0f;

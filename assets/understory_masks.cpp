@@ -183,7 +183,7 @@ std::shared_ptr<const AlphaMask> woodruff_whorl_mask() {
     for (int i = 0; i < kWoodruffWhorlLeaves; ++i) {  // evenly round the stem, a little uneven in angle and length
       const float deg = (360.0f / float(kWoodruffWhorlLeaves)) * (float(i) + 0.25f * (jitter(i, 41) - 0.5f));
       const float len = 0.4f + 0.06f * jitter(i, 42);
-      const auto shade = uint8_t(150 + int(100.0f * jitter(i, 43)));
+      const auto shade = uint8_t(130 + int(70.0f * jitter(i, 43)));  // darker than wood sorrel, as the plant is
       s.push_back({stroke_towards(hub, deg, 0.02f), stroke_towards(hub, deg, len), 0.045f, 0, Shape::Pointed, shade});
     }
     return rasterise_strokes(s, kWoodruffMaskSize, kWoodruffMaskSize);

@@ -49,7 +49,7 @@ std::shared_ptr<const AlphaMask> wood_sorrel_leaf_mask();
 inline constexpr int kWoodruffMaskSize = 256, kWoodruffWhorlLeaves = 8;
 
 /// Woodruff: one whorl of kWoodruffWhorlLeaves narrow lanceolate leaves radiating from the card centre
-/// (reaching 0.46 of the side), each its own brightness (alpha 150-250).
+/// (reaching 0.46 of the side), each its own brightness (alpha 130-200: a deeper green than wood sorrel).
 std::shared_ptr<const AlphaMask> woodruff_whorl_mask();
 
 /// Width and height (texels) of the herb stalk mask.
