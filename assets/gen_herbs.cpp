@@ -52,15 +52,14 @@ GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
   for (const auto& [base, top] : stalks)
     add_card(b, 0.5f * (base + top), 0.5f * kStalkCardWidth * horizontal(rng.range(0.0f, 2.0f * kPi)), 0.5f * (top - base));
   b.begin_part(Role::GroundVegetation, Material::Herb, look.leaf_mask(), true);
+  const int extra_levels = look.levels[1] - look.levels[0];  // a fixed count (wood sorrel) draws nothing
   for (const auto& [base, top] : stalks) {  // leaves spread flat at the stem's levels, tilted a little
-    const int extra = look.levels[1] - look.levels[0];  // a fixed count (wood sorrel) draws nothing
-    const int levels = look.levels[0] + (extra > 0 ? int(rng.below(uint32_t(extra + 1))) : 0);
+    const int levels = look.levels[0] + (extra_levels > 0 ? int(rng.below(uint32_t(extra_levels + 1))) : 0);
     for (int k = 0; k < levels; ++k) {
-      const float along = 1.0f - kLevelStep * float(levels - 1 - k);
+      const float below_top = kLevelStep * float(levels - 1 - k);  // share of the stem below its top (0 at the top)
       const float scale = levels > 1 && k == levels - 1 ? kTopLevelScale : 1.0f;
       const float across = scale * rng.range(look.span[0], look.span[1]);
-      const Vec3f at = k == levels - 1 ? top : Vec3f(base + along * (top - base));
-      add_leaf_card(b, rng, at, Vec3f::UnitZ(), look.tilt, 0.5f * across / look.fill);
+      add_leaf_card(b, rng, top - below_top * (top - base), Vec3f::UnitZ(), look.tilt, 0.5f * across / look.fill);
     }
   }
   return {b.finish(), Role::GroundVegetation, CollisionProxy{}};

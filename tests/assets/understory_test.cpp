@@ -15,9 +15,9 @@ namespace silva::assets {
 namespace {
 
 const Factory& factory(const char* prefix) {
-  for (const Factory& f : factories())
-    if (std::string(f.prefix) == prefix) return f;
-  throw std::runtime_error(prefix);
+  const Factory* f = find_factory(prefix);
+  if (f == nullptr) throw std::runtime_error(prefix);
+  return *f;
 }
 
 /// Opaque texels of one mask row.
