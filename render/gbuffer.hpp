@@ -22,7 +22,7 @@ struct GBuffer {
   std::vector<uint32_t> base_color;     ///< Own albedo of textured asset parts (pack_srgb8); 0 = use `material`.
   std::vector<uint32_t> instance_id;    ///< Packed instance id, 0 = none.
   std::vector<uint32_t> variation;      ///< Per-instance variation seed (Instance::variation).
-  std::vector<uint8_t> leaf;            ///< Alpha of the mask texel the pixel saw (0: no mask; leaf_brightness).
+  std::vector<uint8_t> leaf;            ///< Mask alpha the pixel saw, from the leaf mips at its footprint (0: no mask; leaf_brightness).
   std::vector<float> mask_texels;       ///< Alpha-mask texels across the pixel's footprint (0: no mask): > 1 is minified.
   /// Allocates all planes for w x h and clears them to "no hit".
   void resize(int w, int h);

@@ -72,7 +72,7 @@ struct ItemContext {
   const Mesh& mesh;                       ///< Its LOD's mesh.
   Eigen::Matrix<double, 3, 4> m;          ///< Object -> view.
   bool cull_back;                         ///< Back-face culling on for single-sided parts.
-  const AlphaBitsCache& masks;            ///< Opacity bits of the masks.
+  const MaskCache& masks;            ///< Opacity bits of the masks.
   const TileGrid& grid;                   ///< Tiles to bin into.
   GeometryStore& store;                   ///< Output.
   VertexCache& vertices;                  ///< The worker's transformed vertices of the item.
@@ -131,7 +131,7 @@ void process_run(const ItemContext& c, uint32_t t_begin, uint32_t t_end, VertexR
 /// (kPlacementRun triangles): runs wholly outside are dropped (each of their triangles would fail
 /// the same frustum plane), runs that need no clipping go to the SIMD setup.
 void process_item(const Scene& scene, const SetupView& sv, const DrawItem& item, bool cull_back,
-                  const AlphaBitsCache& masks, const TileGrid& grid, GeometryStore& store, VertexCache& vertices) {
+                  const MaskCache& masks, const TileGrid& grid, GeometryStore& store, VertexCache& vertices) {
   const Instance& inst = scene.instances[item.instance];
   const ItemContext c{scene, sv, item, scene.meshes[inst.mesh].level(item.lod), object_to_view(inst, sv.view),
                       cull_back, masks, grid, store, vertices};
@@ -186,7 +186,7 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 }
 
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
+                       const MaskCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
                        VertexCacheSet& caches) {
   for (uint32_t i = 0; i < scene.meshes.size(); ++i) {
     for (const Mesh* lod : scene.meshes[i].lods) check_mesh(*lod, i);

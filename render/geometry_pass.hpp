@@ -6,7 +6,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
-#include "render/alpha_bits.hpp"
+#include "render/mask_cache.hpp"
 #include "render/bin.hpp"
 #include "render/instance_cull.hpp"
 #include "render/scene.hpp"
@@ -48,7 +48,7 @@ uint64_t build_draw_items(const Scene& scene, const InstanceSelection& selection
 /// take their bits from `masks` (updated for this scene). Throws InputError for a mesh whose
 /// indices, normals or uvs do not match its positions.
 void run_geometry_pass(const Scene& scene, const SetupView& view, std::span<const DrawItem> items, bool cull_back,
-                       const AlphaBitsCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
+                       const MaskCache& masks, const TileGrid& grid, GeometryStoreSet& stores,
                        VertexCacheSet& caches);
 
 }  // namespace silva::render

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "core/mesh.hpp"
-#include "render/alpha_bits.hpp"
+#include "render/mask_cache.hpp"
 #include "render/raster_conventions.hpp"
 #include "render/view_projection.hpp"
 
@@ -59,7 +59,7 @@ static_assert(sizeof(BinEntry) == 16, "bins hold 4 entries per cache line");
 /// the pixel is opaque when bits->opaque(s, t) (nearest texel, repeat wrap).
 struct AlphaAttrib {
   PixelPlane u, v, w;               ///< U / W and V / W are the texture coordinates.
-  const AlphaBits* bits = nullptr;  ///< Non-owning; the renderer's AlphaBitsCache outlives the pass.
+  const AlphaBits* bits = nullptr;  ///< Non-owning; the renderer's MaskCache outlives the pass.
 };
 
 }  // namespace silva::render

@@ -37,7 +37,7 @@ struct PassState {
 struct Renderer::Impl {
   std::vector<BoundingSphere> spheres;         ///< Per mesh, this pass.
   std::vector<DrawItem> items;                 ///< Geometry tasks, this pass.
-  AlphaBitsCache masks;                        ///< Opacity bits of the scene's alpha masks.
+  MaskCache masks;                        ///< Opacity bits and leaf mips of the scene's alpha masks.
   GeometryStoreSet stores;                     ///< Set-up triangles and bins, per chunk of items.
   VertexCacheSet vertex_caches;                ///< Thread-local transformed vertices of an item.
   TileScratchSet tile_scratch;                 ///< Thread-local tile planes.
@@ -92,7 +92,7 @@ const VisibilityBuffer& Renderer::render_visibility(const Scene& scene, const Ca
 void Renderer::render_gbuffer(const Scene& scene, const Camera& camera, const RenderOptions& options, GBuffer& out,
                               RenderStats* stats) {
   const VisibilityBuffer& vis = render_visibility(scene, camera, options, stats);
-  resolve_gbuffer(scene, camera, vis, impl_->camera.instances.lod, out);
+  resolve_gbuffer(scene, camera, vis, impl_->camera.instances.lod, impl_->masks, out);
 }
 
 std::span<const uint32_t> Renderer::instance_lods() const { return impl_->camera.instances.lod; }

@@ -54,11 +54,13 @@ struct HitTriangle {
   Mat3d cof;                                      ///< Normal transform (cofactor of the linear part).
   Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
   double mask_texels_per_metre = 0;               ///< Masked part: mask texels per metre of the triangle (isotropic).
+  const AlphaMask* mips_of = nullptr;             ///< The mask `mips` belongs to (null: none looked up yet).
+  const LeafMips* mips = nullptr;                 ///< Leaf mips of the part's mask (null without one).
 
   /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`, seen from `origin` (the
   /// instance's transforms are kept when the slot held the same instance before).
-  void prepare(const Scene& scene, uint32_t instance_index, uint32_t lod, uint32_t triangle_index,
-               const Vec3d& origin) {
+  void prepare(const Scene& scene, const MaskCache& masks, uint32_t instance_index, uint32_t lod,
+               uint32_t triangle_index, const Vec3d& origin) {
     if (instance_index != instance) {
       inst = &scene.instances[instance_index];
       m = inst->object_to_world.cast<double>();
@@ -80,6 +82,10 @@ struct HitTriangle {
     e2_dot_q = e2.dot(qvec);
     part = &part_of(*mesh, triangle_index);
     mask_texels_per_metre = part->mask && !mesh->uvs.empty() ? texel_density(*part->mask) : 0.0;
+    if (part->mask.get() != mips_of) {  // the slot's last mask is most often this one
+      mips_of = part->mask.get();
+      mips = mips_of ? masks.leaf_mips(mips_of) : nullptr;
+    }
   }
 
   /// Mask texels per metre: the square root of the triangle's area in texels over its world area.
@@ -100,10 +106,11 @@ constexpr size_t kTriangleSlots = 256;
 class TriangleCache {
  public:
   /// The prepared triangle `triangle` of `instance` (LOD `lod`), preparing it on a miss.
-  const HitTriangle& get(const Scene& scene, uint32_t instance, uint32_t lod, uint32_t triangle, const Vec3d& origin) {
+  const HitTriangle& get(const Scene& scene, const MaskCache& masks, uint32_t instance, uint32_t lod, uint32_t triangle,
+                         const Vec3d& origin) {
     const uint32_t h = (instance * 0x9E3779B1u) ^ (triangle * 0x85EBCA77u);
     HitTriangle& slot = slots_[(h ^ (h >> 15)) % kTriangleSlots];
-    if (slot.instance != instance || slot.triangle != triangle) slot.prepare(scene, instance, lod, triangle, origin);
+    if (slot.instance != instance || slot.triangle != triangle) slot.prepare(scene, masks, instance, lod, triangle, origin);
     return slot;
   }
 
@@ -169,16 +176,21 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;
   const AlphaMask* mask = h.part->mask.get();
-  g.leaf[i] = mask ? mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height)) * size_t(mask->width) +
-                                  size_t(AlphaMask::texel(uv.x(), mask->width))]
-                   : 0;
   g.mask_texels[i] = float(h.mask_texels_per_metre * t / cam.fx);  // the pixel is t / fx metres wide there
+  if (!mask) {
+    g.leaf[i] = 0;
+  } else if (h.mips) {
+    g.leaf[i] = h.mips->alpha(*mask, uv.x(), uv.y(), g.mask_texels[i]);
+  } else {
+    g.leaf[i] = mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height)) * size_t(mask->width) +
+                            size_t(AlphaMask::texel(uv.x(), mask->width))];
+  }
 }
 
 }  // namespace
 
 void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityBuffer& vis,
-                     std::span<const uint32_t> instance_lod, GBuffer& out) {
+                     std::span<const uint32_t> instance_lod, const MaskCache& masks, GBuffer& out) {
   if (out.width != vis.width || out.height != vis.height || out.depth.size() != vis.size())
     out.resize(vis.width, vis.height);
   std::vector<double> ray_x(size_t(vis.width));
@@ -197,7 +209,7 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
           write_miss(out, i);
         } else {
           if (!h || inst != h->instance || vis.triangle[i] != h->triangle)
-            h = &cache.get(scene, inst, instance_lod[inst], vis.triangle[i], origin);
+            h = &cache.get(scene, masks, inst, instance_lod[inst], vis.triangle[i], origin);
           write_hit(camera, *h, ray_x[size_t(u)], ray_y, out, i);
         }
       }

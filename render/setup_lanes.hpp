@@ -3,7 +3,7 @@
 /// geometry items inside a perspective view: the same bits as setup_triangle, triangle by triangle.
 #include <cstdint>
 
-#include "render/alpha_bits.hpp"
+#include "render/mask_cache.hpp"
 #include "render/bin.hpp"
 #include "render/triangle_setup.hpp"
 

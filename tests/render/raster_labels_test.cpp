@@ -9,7 +9,9 @@
 #include "raster_test_scenes.hpp"
 #include "render/instance_cull.hpp"
 #include "render/raster_conventions.hpp"
+#include "render/leaf_mips.hpp"
 #include "render/lighting.hpp"
+#include "render/materials.hpp"
 #include "render/renderer.hpp"
 #include "render/shade.hpp"
 
@@ -126,6 +128,37 @@ TEST(RasterLabels, MaskTexelsMeasureHowMinifiedEachPixelsMaskIs) {
     }
   }
   EXPECT_GT(card_pixels, 5000);
+}
+
+TEST(RasterLabels, LeafAlphaComesFromTheMipLevelOfThePixelsFootprint) {
+  // Every texel its own leaf brightness; at 16/3 texels across a pixel (level 2) each pixel takes the mean
+  // of a 4 x 4 block: the brightness varies about a quarter as much from pixel to pixel as between texels.
+  std::mt19937 gen(3);
+  std::vector<uint8_t> alpha(256 * 256);
+  for (uint8_t& a : alpha) a = uint8_t(128 + gen() % 127);
+  const auto mask = make_mask(256, 256, alpha);
+  const Camera cam = screen_camera(128, 96);
+  Mesh card = test::make_quad({-1.5f, -1.5f, 2}, {-1.5f, 1.5f, 2}, {1.5f, 1.5f, 2}, {1.5f, -1.5f, 2}, Role::TreeCanopy,
+                              false, mask);
+  card.uvs = {Vec2f(0, 0), Vec2f(0, 2), Vec2f(2, 2), Vec2f(2, 0)};
+  const GBuffer g = render_card_over_ground(cam, std::move(card));
+  const LeafMips mips = LeafMips::of(*mask);
+  const auto spread = [](const std::vector<float>& x) {
+    double mean = 0, sq = 0;
+    for (const float v : x) mean += v / double(x.size());
+    for (const float v : x) sq += (v - mean) * (v - mean) / double(x.size());
+    return std::sqrt(sq);
+  };
+  std::vector<float> pixels, texels;
+  for (size_t i = 0; i < g.size(); ++i) {
+    if (g.role[i] != Role::TreeCanopy) continue;
+    ASSERT_EQ(g.leaf[i], mips.alpha(*mask, g.uv[i].x(), g.uv[i].y(), g.mask_texels[i])) << i;
+    pixels.push_back(leaf_brightness(g.leaf[i]));
+  }
+  for (const uint8_t a : alpha) texels.push_back(leaf_brightness(a));
+  ASSERT_GT(pixels.size(), 5000u);
+  EXPECT_LT(spread(pixels), 0.35 * spread(texels));
+  EXPECT_GT(spread(pixels), 0.15 * spread(texels));
 }
 
 TEST(RasterLabels, OwnBaseColourFollowsUvIntoTheGBufferAndTheRgb) {

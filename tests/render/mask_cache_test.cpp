@@ -1,10 +1,10 @@
-// The scene's cache of mask opacity bits (render/alpha_bits.hpp) and the tile grid's division-free
+// The scene's cache of mask opacity bits and leaf mips (render/mask_cache.hpp) and the tile grid's division-free
 // tile index (render/bin.hpp): known answers against the scene's masks and plain division.
 #include <gtest/gtest.h>
 
 #include <memory>
 
-#include "render/alpha_bits.hpp"
+#include "render/mask_cache.hpp"
 #include "render/bin.hpp"
 
 namespace silva::render {
@@ -33,16 +33,18 @@ Scene scene_with(const std::shared_ptr<const AlphaMask>& mask, Mesh& mesh) {
   return scene;
 }
 
-TEST(AlphaBitsCache, KeepsTheMasksOfTheCurrentSceneOnly) {
+TEST(MaskCache, KeepsTheMasksOfTheCurrentSceneOnly) {
   std::shared_ptr<const AlphaMask> a = patterned_mask(8, 8, 1), b = patterned_mask(33, 2, 2);
   const std::weak_ptr<const AlphaMask> a_alive = a;
   const AlphaMask* a_address = a.get();
   Mesh mesh_a, mesh_b;
   Scene scene_a = scene_with(a, mesh_a);
-  AlphaBitsCache cache;
+  MaskCache cache;
   cache.update(scene_a);
   ASSERT_NE(cache.find(a_address), nullptr);
   EXPECT_EQ(cache.find(a_address)->words, AlphaBits::of(*a).words);
+  ASSERT_NE(cache.leaf_mips(a_address), nullptr);
+  EXPECT_EQ(cache.leaf_mips(a_address)->coarse_levels(), 3);  // 4x4, 2x2, 1x1
   EXPECT_EQ(cache.find(b.get()), nullptr);
   // The scene lets go of the mask: the cache still holds it, so its address cannot be reused.
   a.reset();
@@ -51,6 +53,7 @@ TEST(AlphaBitsCache, KeepsTheMasksOfTheCurrentSceneOnly) {
   Scene scene_b = scene_with(b, mesh_b);
   cache.update(scene_b);
   EXPECT_EQ(cache.find(a_address), nullptr);
+  EXPECT_EQ(cache.leaf_mips(a_address), nullptr);
   EXPECT_TRUE(a_alive.expired());
   ASSERT_NE(cache.find(b.get()), nullptr);
   EXPECT_EQ(cache.find(b.get())->width, 33);

@@ -1,14 +1,16 @@
-#include "render/alpha_bits.hpp"
+#include "render/mask_cache.hpp"
 
 namespace silva::render {
 
-void AlphaBitsCache::update(const Scene& scene) {
+void MaskCache::update(const Scene& scene) {
   ++updates_;
   const auto add = [&](const Mesh& mesh) {
     for (const MeshPart& part : mesh.parts) {
       if (!part.mask) continue;
       auto it = entries_.find(part.mask.get());
-      if (it == entries_.end()) it = entries_.emplace(part.mask.get(), Entry{part.mask, AlphaBits::of(*part.mask), 0}).first;
+      if (it == entries_.end())
+        it = entries_.emplace(part.mask.get(), Entry{part.mask, AlphaBits::of(*part.mask), LeafMips::of(*part.mask), 0})
+                 .first;
       it->second.used = updates_;
     }
   };
@@ -19,9 +21,14 @@ void AlphaBitsCache::update(const Scene& scene) {
   std::erase_if(entries_, [&](const auto& kv) { return kv.second.used != updates_; });
 }
 
-const AlphaBits* AlphaBitsCache::find(const AlphaMask* mask) const {
+const AlphaBits* MaskCache::find(const AlphaMask* mask) const {
   const auto it = entries_.find(mask);
   return it == entries_.end() ? nullptr : &it->second.bits;
+}
+
+const LeafMips* MaskCache::leaf_mips(const AlphaMask* mask) const {
+  const auto it = entries_.find(mask);
+  return it == entries_.end() ? nullptr : &it->second.mips;
 }
 
 }  // namespace silva::render
