@@ -72,7 +72,7 @@ struct ItemContext {
   const Mesh& mesh;                       ///< Its LOD's mesh.
   Eigen::Matrix<double, 3, 4> m;          ///< Object -> view.
   bool cull_back;                         ///< Back-face culling on for single-sided parts.
-  const MaskCache& masks;            ///< Opacity bits of the masks.
+  const MaskCache& masks;                 ///< Opacity bits of the masks.
   const TileGrid& grid;                   ///< Tiles to bin into.
   GeometryStore& store;                   ///< Output.
   VertexCache& vertices;                  ///< The worker's transformed vertices of the item.

@@ -50,10 +50,12 @@ LeafMips LeafMips::of(const AlphaMask& mask) {
 
 uint8_t LeafMips::alpha(const AlphaMask& mask, float u, float v, float texels_across) const {
   const int k = texels_across >= 2.0f ? std::min(std::ilogb(texels_across), coarse_levels()) : 0;
-  if (k == 0)
-    return mask.alpha[size_t(AlphaMask::texel(v, mask.height)) * size_t(mask.width) + size_t(AlphaMask::texel(u, mask.width))];
+  const auto at = [&](const std::vector<uint8_t>& alpha, int width, int height) {
+    return alpha[size_t(AlphaMask::texel(v, height)) * size_t(width) + size_t(AlphaMask::texel(u, width))];
+  };
+  if (k == 0) return at(mask.alpha, mask.width, mask.height);
   const Level& l = levels_[size_t(k - 1)];
-  return l.alpha[size_t(AlphaMask::texel(v, l.height)) * size_t(l.width) + size_t(AlphaMask::texel(u, l.width))];
+  return at(l.alpha, l.width, l.height);
 }
 
 }  // namespace silva::render

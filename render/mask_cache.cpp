@@ -21,14 +21,19 @@ void MaskCache::update(const Scene& scene) {
   std::erase_if(entries_, [&](const auto& kv) { return kv.second.used != updates_; });
 }
 
-const AlphaBits* MaskCache::find(const AlphaMask* mask) const {
+const MaskCache::Entry* MaskCache::entry(const AlphaMask* mask) const {
   const auto it = entries_.find(mask);
-  return it == entries_.end() ? nullptr : &it->second.bits;
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+const AlphaBits* MaskCache::find(const AlphaMask* mask) const {
+  const Entry* e = entry(mask);
+  return e ? &e->bits : nullptr;
 }
 
 const LeafMips* MaskCache::leaf_mips(const AlphaMask* mask) const {
-  const auto it = entries_.find(mask);
-  return it == entries_.end() ? nullptr : &it->second.mips;
+  const Entry* e = entry(mask);
+  return e ? &e->mips : nullptr;
 }
 
 }  // namespace silva::render

@@ -23,13 +23,15 @@ class MaskCache {
   const LeafMips* leaf_mips(const AlphaMask* mask) const;
 
  private:
-  /// A cached mask and its bits.
+  /// A cached mask, its bits and its mips.
   struct Entry {
     std::shared_ptr<const AlphaMask> mask;  ///< Keeps the mask (and so its address) alive.
     AlphaBits bits;                         ///< Its bits.
     LeafMips mips;                          ///< Its leaf brightness mips.
     uint64_t used = 0;                      ///< Last update() that saw it.
   };
+  /// The entry of a mask seen by the last update(), or null.
+  const Entry* entry(const AlphaMask* mask) const;
   std::unordered_map<const AlphaMask*, Entry> entries_;  ///< By mask address.
   uint64_t updates_ = 0;                                 ///< Number of update() calls.
 };

@@ -38,6 +38,9 @@ void write_miss(GBuffer& g, size_t i) {
   g.mask_texels[i] = 0.0f;
 }
 
+/// Mips without coarse levels: every footprint reads the mask itself.
+const LeafMips kMaskItself;
+
 /// World-space data of one (instance, triangle) pair, prepared once and reused by every pixel
 /// of the frame's row block that sees it.
 struct HitTriangle {
@@ -55,7 +58,7 @@ struct HitTriangle {
   Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
   double mask_texels_per_metre = 0;               ///< Masked part: mask texels per metre of the triangle (isotropic).
   const AlphaMask* mips_of = nullptr;             ///< The mask `mips` belongs to (null: none looked up yet).
-  const LeafMips* mips = nullptr;                 ///< Leaf mips of the part's mask (null without one).
+  const LeafMips* mips = nullptr;                 ///< Leaf mips of the part's mask (null without a mask).
 
   /// Prepares triangle `triangle` of `instance` drawn at LOD `lod`, seen from `origin` (the
   /// instance's transforms are kept when the slot held the same instance before).
@@ -85,6 +88,7 @@ struct HitTriangle {
     if (part->mask.get() != mips_of) {  // the slot's last mask is most often this one
       mips_of = part->mask.get();
       mips = mips_of ? masks.leaf_mips(mips_of) : nullptr;
+      if (mips_of && !mips) mips = &kMaskItself;  // a mask the cache lacks is read at level 0
     }
   }
 
@@ -177,14 +181,7 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.variation[i] = h.inst->variation;
   const AlphaMask* mask = h.part->mask.get();
   g.mask_texels[i] = float(h.mask_texels_per_metre * t / cam.fx);  // the pixel is t / fx metres wide there
-  if (!mask) {
-    g.leaf[i] = 0;
-  } else if (h.mips) {
-    g.leaf[i] = h.mips->alpha(*mask, uv.x(), uv.y(), g.mask_texels[i]);
-  } else {
-    g.leaf[i] = mask->alpha[size_t(AlphaMask::texel(uv.y(), mask->height)) * size_t(mask->width) +
-                            size_t(AlphaMask::texel(uv.x(), mask->width))];
-  }
+  g.leaf[i] = mask ? h.mips->alpha(*mask, uv.x(), uv.y(), g.mask_texels[i]) : 0;
 }
 
 }  // namespace
