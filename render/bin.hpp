@@ -12,7 +12,7 @@ namespace silva::render {
 struct TileGrid {
   int width = 0;      ///< Image width in pixels.
   int height = 0;     ///< Image height in pixels.
-  int tile_size = 64; ///< Tile side in pixels.
+  int tile_size = 128; ///< Tile side in pixels.
   int tiles_x = 0;    ///< Tiles across.
   int tiles_y = 0;    ///< Tiles down.
   uint64_t tile_reciprocal = 0;  ///< ceil(2^32 / tile_size): tile_of's multiplier.

@@ -8,7 +8,7 @@ namespace silva::render {
 struct RenderOptions {
   bool lod = true;            ///< false: always draw MeshLods::lods[0] (reference renders).
   bool backface_cull = true;  ///< false: draw back faces of single-sided parts too.
-  int tile_size = 64;         ///< Screen tile side in pixels: a multiple of 8 in [8, 256].
+  int tile_size = 128;        ///< Screen tile side in pixels: a multiple of 8 in [8, 256].
   double min_radius = 0;      ///< Instances with a smaller bounding sphere (metres) are not drawn.
 };
 
