@@ -24,6 +24,7 @@ constexpr Factory kFactories[] = {
     {AssetKind::Fern, "fern", 20, generate_fern},
     {AssetKind::Fern, "wood_sorrel", 20, generate_wood_sorrel},
     {AssetKind::Fern, "woodruff", 20, generate_woodruff},
+    {AssetKind::Fern, "nettle", 20, generate_nettle},
     {AssetKind::Shrub, "bilberry", 20, generate_bilberry},
     {AssetKind::Shrub, "hazel", 20, generate_hazel},
     {AssetKind::Shrub, "bramble", 20, generate_bramble},

@@ -1,4 +1,4 @@
-// Forest herbs: patches of stems on narrow stalk cards carrying flat leaf cards (wood sorrel, woodruff).
+// Forest herbs: patches of stems on narrow stalk cards carrying flat leaf cards (wood sorrel, woodruff, nettle).
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -16,8 +16,6 @@ namespace {
 
 /// Width of a stalk card, metres (its mask's line is a third to a quarter of it: a 1-1.5 mm stem).
 constexpr float kStalkCardWidth = 0.004f;
-/// Step between a stem's leaf levels, as a share of its height (the top level at the stem's top).
-constexpr float kLevelStep = 0.2f;
 /// Size of a stem's top leaf level relative to the ones below, when it has several.
 constexpr float kTopLevelScale = 0.7f;
 
@@ -28,13 +26,15 @@ struct HerbPatch {
   int min_stems, extra_stems;                    ///< Stems: min_stems + 0..extra_stems.
   float lean[2];                                 ///< Range of a stem's lean, as a share of its height.
   int levels[2];                                 ///< Range of leaf levels per stem (the top one at its tip).
+  float level_step;                              ///< Step between a stem's leaf levels, as a share of its height.
   float span[2];                                 ///< Range of a leaf card's nominal leaf span, metres.
   float fill;                                    ///< Share of its card's side a leaf spans.
   float tilt;                                    ///< How far leaf cards tilt from facing up (add_leaf_card).
   std::shared_ptr<const AlphaMask> (*leaf_mask)();  ///< Mask of the leaf cards.
+  Material material = Material::Herb;            ///< Material of the stalks and leaves.
 };
 
-/// A patch of `look`'s stems, each a stalk card with leaf cards at its levels, all material Herb.
+/// A patch of `look`'s stems, each a stalk card with leaf cards at its levels, all of `look`'s material.
 GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
   constexpr float kPi = std::numbers::pi_v<float>;
   const float height = rng.range(look.height[0], look.height[1]);  // the tallest stem
@@ -48,15 +48,15 @@ GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
     stalks.emplace_back(base, base + Vec3f(0, 0, h) + lean * horizontal(az + rng.range(-0.6f, 0.6f)));
   }
   MeshBuilder b;
-  b.begin_part(Role::GroundVegetation, Material::Herb, herb_stalk_mask(), true);
+  b.begin_part(Role::GroundVegetation, look.material, herb_stalk_mask(), true);
   for (const auto& [base, top] : stalks)
     add_card(b, 0.5f * (base + top), 0.5f * kStalkCardWidth * horizontal(rng.range(0.0f, 2.0f * kPi)), 0.5f * (top - base));
-  b.begin_part(Role::GroundVegetation, Material::Herb, look.leaf_mask(), true);
+  b.begin_part(Role::GroundVegetation, look.material, look.leaf_mask(), true);
   const int extra_levels = look.levels[1] - look.levels[0];  // a fixed count (wood sorrel) draws nothing
   for (const auto& [base, top] : stalks) {  // leaves spread flat at the stem's levels, tilted a little
     const int levels = look.levels[0] + (extra_levels > 0 ? int(rng.below(uint32_t(extra_levels + 1))) : 0);
     for (int k = 0; k < levels; ++k) {
-      const float below_top = kLevelStep * float(levels - 1 - k);  // share of the stem below its top (0 at the top)
+      const float below_top = look.level_step * float(levels - 1 - k);  // share of the stem below its top (0 at the top)
       const float scale = levels > 1 && k == levels - 1 ? kTopLevelScale : 1.0f;
       const float across = scale * rng.range(look.span[0], look.span[1]);
       add_leaf_card(b, rng, top - below_top * (top - base), Vec3f::UnitZ(), look.tilt, 0.5f * across / look.fill);
@@ -68,7 +68,7 @@ GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
 }  // namespace
 
 GeneratedAsset generate_wood_sorrel(Rng& rng) {
-  static const HerbPatch look{{0.05f, 0.13f}, {0.12f, 0.32f}, kMinWoodSorrelLeaves, 50, {0.05f, 0.4f}, {1, 1},
+  static const HerbPatch look{{0.05f, 0.13f}, {0.12f, 0.32f}, kMinWoodSorrelLeaves, 50, {0.05f, 0.4f}, {1, 1}, 0.2f,
                               {kWoodSorrelLeafSpan[0], kWoodSorrelLeafSpan[1]}, kWoodSorrelLeafFill, 0.35f,
                               wood_sorrel_leaf_mask};
   return generate_herb_patch(rng, look);
@@ -76,8 +76,15 @@ GeneratedAsset generate_wood_sorrel(Rng& rng) {
 
 GeneratedAsset generate_woodruff(Rng& rng) {
   static const HerbPatch look{{0.12f, 0.28f}, {0.15f, 0.4f}, kMinWoodruffStems, 20, {0.03f, 0.25f},
-                              {kWoodruffLevels[0], kWoodruffLevels[1]}, {kWoodruffWhorlSpan[0], kWoodruffWhorlSpan[1]},
+                              {kWoodruffLevels[0], kWoodruffLevels[1]}, 0.2f, {kWoodruffWhorlSpan[0], kWoodruffWhorlSpan[1]},
                               kWoodruffWhorlFill, 0.25f, woodruff_whorl_mask};
+  return generate_herb_patch(rng, look);
+}
+
+GeneratedAsset generate_nettle(Rng& rng) {  // leaf pairs droop; the fern's material dies back in winter
+  static const HerbPatch look{{0.5f, 1.1f}, {0.25f, 0.6f}, kMinNettleStems, 16, {0.02f, 0.12f},
+                              {kNettleLevels[0], kNettleLevels[1]}, 0.1f, {kNettlePairSpan[0], kNettlePairSpan[1]},
+                              kNettlePairFill, 0.6f, nettle_pair_mask, Material::Fern};
   return generate_herb_patch(rng, look);
 }
 

@@ -76,6 +76,18 @@ inline constexpr int kWoodruffLevels[2] = {3, 4};
 inline constexpr float kWoodruffWhorlSpan[2] = {0.05f, 0.08f};
 /// Share of its card's side a woodruff whorl spans (the mask's leaves reach 0.46 from the centre).
 inline constexpr float kWoodruffWhorlFill = 0.92f;
+/// Stinging nettle: a clonal patch of kMinNettleStems-32 upright stems 0.28-1.1 m high, each with kNettleLevels
+/// opposite pairs of toothed leaves kNettlePairSpan across (the top pair smaller) down its upper part, drooping;
+/// the fern's material (green, autumn-brown, dead grey-brown stems in winter); grown as a fern-layer herb.
+GeneratedAsset generate_nettle(Rng& rng);
+/// Fewest stems of a nettle patch.
+inline constexpr int kMinNettleStems = 16;
+/// Range of leaf pairs per nettle stem (a tenth of its height apart).
+inline constexpr int kNettleLevels[2] = {6, 9};
+/// Range of a nettle leaf pair's nominal span, metres (Urtica dioica: leaves 4-15 cm long, 5-10 cm typically).
+inline constexpr float kNettlePairSpan[2] = {0.14f, 0.24f};
+/// Share of its card's side a nettle leaf pair spans (the mask's leaves reach 0.46 from the centre).
+inline constexpr float kNettlePairFill = 0.92f;
 /// Bilberry: dense dwarf shrub 0.2-0.5 m, 14-27 green ribbon stems carrying small-leaf cards.
 GeneratedAsset generate_bilberry(Rng& rng);
 /// Hazel: multi-stem shrub 2-5 m, 5-11 fanning stems (tubes, ribbons where thin) with side

@@ -1,5 +1,6 @@
 #include "assets/understory_masks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -36,6 +37,28 @@ void add_tuft(std::vector<Stroke>& s, int count, float h, float min_len, int sal
     const float lean = (x - 0.5f) * 50.0f + 20.0f * (jitter(i, salt + 1) - 0.5f);
     const float len = h * (min_len + (1.0f - min_len) * jitter(i, salt + 2));
     add_blade(s, {x, h}, lean, lean > 0 ? 18.0f : -18.0f, len, 0.022f + 0.01f * jitter(i, salt + 3));
+  }
+}
+
+/// A nettle leaf of length `len` from `base` at angle `deg`: broad ovate below, drawn out to a long point,
+/// with eight forward-pointing teeth a side along the whole edge.
+void add_nettle_leaf(std::vector<Stroke>& s, const Vec2f& base, float deg, float len) {
+  constexpr float kPi = std::numbers::pi_v<float>;
+  constexpr float kBroad = 0.6f, kTipFrom = 0.2f;  // the broad part's reach, the tip's start (shares of len)
+  const float broad = 0.3f * len, tip = 0.22f * len;
+  s.push_back({base, stroke_towards(base, deg, kBroad * len), broad, 0, Shape::Round});
+  s.push_back({stroke_towards(base, deg, kTipFrom * len), stroke_towards(base, deg, len), tip, 0, Shape::Pointed});
+  constexpr int kTeeth = 8;
+  for (int k = 0; k < kTeeth; ++k) {
+    const float t = 0.12f + 0.76f * (float(k) + 0.5f) / float(kTeeth);
+    const float w = std::max(t < kBroad ? broad * std::pow(std::sin(kPi * t / kBroad), 0.35f) : 0.0f,
+                             t > kTipFrom ? tip * std::pow(std::sin(kPi * (t - kTipFrom) / (1.0f - kTipFrom)), 0.7f) : 0.0f);
+    const Vec2f on = stroke_towards(base, deg, t * len);
+    for (float side : {-1.0f, 1.0f}) {
+      const Vec2f edge = stroke_towards(on, deg + side * 90.0f, 0.75f * w);
+      s.push_back({edge, stroke_towards(edge, deg + side * 50.0f, 0.35f * w + 0.02f * len), 0.045f * len, 0,
+                   Shape::Pointed});
+    }
   }
 }
 
@@ -187,6 +210,24 @@ std::shared_ptr<const AlphaMask> woodruff_whorl_mask() {
       s.push_back({stroke_towards(hub, deg, 0.02f), stroke_towards(hub, deg, len), 0.045f, 0, Shape::Pointed, shade});
     }
     return rasterise_strokes(s, kWoodruffMaskSize, kWoodruffMaskSize);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> nettle_pair_mask() {
+  static const auto mask = [] {
+    const Vec2f hub(0.5f, 0.5f);
+    std::vector<Stroke> s;
+    for (int i = 0; i < 2; ++i) {  // opposite, a little off the straight line and unequal
+      const float deg = 90.0f + 180.0f * float(i) + 10.0f * (jitter(i, 51) - 0.5f);
+      const size_t first = s.size();
+      const Vec2f base = stroke_towards(hub, deg, 0.03f);
+      s.push_back({hub, base, 0.01f, 0.008f});  // the leaf stalk
+      add_nettle_leaf(s, base, deg, 0.4f + 0.03f * jitter(i, 52));
+      const auto shade = uint8_t(128 + int(47.0f * jitter(i, 53)));
+      for (size_t k = first; k < s.size(); ++k) s[k].alpha = shade;
+    }
+    return rasterise_strokes(s, kNettleMaskSize, kNettleMaskSize);
   }();
   return mask;
 }

@@ -52,6 +52,13 @@ inline constexpr int kWoodruffMaskSize = 256, kWoodruffWhorlLeaves = 8;
 /// (reaching 0.46 of the side), each its own brightness (alpha 130-200: a deeper green than wood sorrel).
 std::shared_ptr<const AlphaMask> woodruff_whorl_mask();
 
+/// Texels per side of the nettle leaf-pair mask.
+inline constexpr int kNettleMaskSize = 256;
+
+/// Stinging nettle: one opposite pair of ovate, coarsely toothed leaves with drawn-out tips from the card
+/// centre (reaching 0.46 of the side), each its own brightness (alpha 128-175: a dark, dull green).
+std::shared_ptr<const AlphaMask> nettle_pair_mask();
+
 /// Width and height (texels) of the herb stalk mask.
 inline constexpr int kHerbStalkMaskWidth = 32, kHerbStalkMaskHeight = 256;
 

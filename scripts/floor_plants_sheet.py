@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""Contact sheet of a floor plant (wood sorrel, woodruff or grass swards): one row per stand, a random view (1920x1080) that
+"""Contact sheet of a floor plant (wood sorrel, woodruff, nettle or grass swards): one row per stand, a random view (1920x1080) that
 shows the plant, at a quarter size, then a full-resolution crop of it, RGB. With --before, each row shows that
 build's view and crop of the same pose first (an older build needs its own asset library: pass a wrapper that
 sets SILVA_ASSETS; where placement draws differ between the builds, the plants around the pose differ too).
 
-Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|grass_sward] [--silva build/silva] [--before OLD_SILVA]
+Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|nettle|grass_sward] [--silva build/silva] [--before OLD_SILVA]
                                      [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
-       (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg or docs/realism-grass.jpg)
+       (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg, docs/realism-nettle.jpg or
+       docs/realism-grass.jpg)
 """
 import subprocess
 
@@ -22,6 +23,10 @@ PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top,
     "woodruff": ("docs/realism-woodruff.jpg", [
         ("mixed", [], 5, (610, 0)),
         ("mixed", [], 0, (580, 120)),
+    ]),
+    "nettle": ("docs/realism-nettle.jpg", [
+        ("summer", [], 5, (540, 800)),
+        ("winter", ["vegetation.season=winter"], 5, (540, 800)),
     ]),
     "grass_sward": ("docs/realism-grass.jpg", [
         ("mixed", [], 4, (730, 0)),

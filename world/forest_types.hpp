@@ -15,7 +15,7 @@ struct ForestType {
   std::vector<std::string> conifers;     ///< Conifer species grown.
   std::vector<std::string> broadleaves;  ///< Broadleaf species grown.
   std::vector<std::string> shrubs;       ///< Shrub species grown.
-  std::vector<std::string> herbs;        ///< Fern-layer species grown (`fern`, `wood_sorrel`, `woodruff`).
+  std::vector<std::string> herbs;        ///< Fern-layer species grown (`fern`, `wood_sorrel`, `woodruff`, `nettle`).
   double shrub_scale = 1.0;              ///< Factor on the share of points that hold a shrub.
   double ground_share = 1.0;             ///< Share of ground-vegetation points with grass and ferns (the rest bare litter).
   double fern_bias = 0.0;                ///< Added to the share of ferns among those tufts (kept within 0 … 1).

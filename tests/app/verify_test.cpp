@@ -98,7 +98,9 @@ TEST_F(Verify, PassesOnAFreshDatasetAndTouchesNothingElse) {
   EXPECT_GE(s["instance"]["interior_agreement"].get<double>(), 0.999);
   EXPECT_LT(s["normal"]["angle_error_deg"]["p50"].get<double>(), 1.0);
   EXPECT_GT(s["lidar"]["compared"].get<uint64_t>(), 100u);
-  EXPECT_GE(s["lidar"]["class_agreement"].get<double>(), 0.99);
+  // About 170 points: a beam may hit a nettle stem or stalk nearer than the 160x90 camera resolves, so two
+  // or three may disagree; more than 2 % would be a labelling fault.
+  EXPECT_GE(s["lidar"]["class_agreement"].get<double>(), 0.98);
   EXPECT_LT(s["lidar"]["range_error_m"]["p50"].get<double>(), 0.05);
   // verify.json is the summary less what varies; VERIFY.md states the verdict.
   const nlohmann::json file = nlohmann::json::parse(read_file(dir / "verify.json"));

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -214,26 +215,46 @@ TEST(Understory, WoodSorrelLeavesAreThreeNotchedLeaflets) {
   }
 }
 
-TEST(Understory, WoodruffStemsCarryWhorlsOfBotanicalSize) {
+/// How a stemmed herb's patches must grow: stems per patch, leaf levels per stem, leaf heights (m).
+struct StemmedHerb {
+  const char* prefix;
+  std::shared_ptr<const AlphaMask> leaf_mask;
+  float fill;                      ///< Share of its card's side a leaf level spans.
+  size_t min_stems, max_stems;
+  size_t min_levels, max_levels;
+  float lowest, highest;           ///< Range every leaf level's height lies in.
+};
+
+/// Checks every variant of `herb` (a stalk part and a leaf part, levels up every stem, heights in range);
+/// returns the spans of all their leaf levels and, per variant, the highest level's height.
+std::vector<float> stemmed_herb_spans(const StemmedHerb& herb, std::vector<float>& tops) {
   std::vector<float> spans;
-  for (uint32_t v = 0; v < factory("woodruff").variants; ++v) {
-    const Asset a = make_asset(factory("woodruff"), kDefaultAssetSeed, v);
+  for (uint32_t v = 0; v < factory(herb.prefix).variants; ++v) {
+    const Asset a = make_asset(factory(herb.prefix), kDefaultAssetSeed, v);
     const Mesh& m = a.lods()[0];
     EXPECT_EQ(a.lods().size(), 1u);
-    ASSERT_EQ(m.parts.size(), 2u);
+    EXPECT_EQ(m.parts.size(), 2u) << a.name;
+    if (m.parts.size() != 2) continue;
     EXPECT_EQ(m.parts[0].mask, herb_stalk_mask());
-    EXPECT_EQ(m.parts[1].mask, woodruff_whorl_mask());
+    EXPECT_EQ(m.parts[1].mask, herb.leaf_mask);
     const size_t stems = m.parts[0].index_count / 6;
-    EXPECT_GE(stems, size_t(kMinWoodruffStems)) << a.name;
-    EXPECT_LE(stems, 36u) << a.name;
+    EXPECT_GE(stems, herb.min_stems) << a.name;
+    EXPECT_LE(stems, herb.max_stems) << a.name;
     std::vector<float> heights;
-    herb_leaves(m, m.parts[1], kWoodruffWhorlFill, spans, heights);
-    EXPECT_GE(heights.size(), 3 * stems) << a.name;  // three or four whorls up every stem
-    EXPECT_LE(heights.size(), 4 * stems) << a.name;
-    expect_heights(heights, 0.02f, 0.3f, a.name);
+    herb_leaves(m, m.parts[1], herb.fill, spans, heights);
+    EXPECT_GE(heights.size(), herb.min_levels * stems) << a.name;
+    EXPECT_LE(heights.size(), herb.max_levels * stems) << a.name;
+    expect_heights(heights, herb.lowest, herb.highest, a.name);
+    tops.push_back(heights.empty() ? 0.0f : *std::max_element(heights.begin(), heights.end()));
   }
+  return spans;
+}
+
+TEST(Understory, WoodruffStemsCarryWhorlsOfBotanicalSize) {
+  std::vector<float> tops;  // three or four whorls up every stem
+  const StemmedHerb woodruff{"woodruff", woodruff_whorl_mask(), kWoodruffWhorlFill, kMinWoodruffStems, 36, 3, 4, 0.02f, 0.3f};
   // Galium odoratum: leaves 2-5 cm long, so a whorl 4-10 cm across (the top whorl smaller).
-  expect_spans(spans, 0.025f, 0.1f, 0.045f, 0.08f);
+  expect_spans(stemmed_herb_spans(woodruff, tops), 0.025f, 0.1f, 0.045f, 0.08f);
 }
 
 TEST(Understory, WoodruffWhorlsAreEightNarrowLeaves) {
@@ -246,6 +267,47 @@ TEST(Understory, WoodruffWhorlsAreEightNarrowLeaves) {
   int covered = 0;
   for (int deg = 0; deg < 360; deg += 3) covered += opaque(float(deg), 0.3f);
   EXPECT_LT(covered, 60);  // narrow: under half the circle is leaf
+}
+
+TEST(Understory, NettleStemsCarryDroopingLeafPairsOfBotanicalSize) {
+  std::vector<float> tops;  // six to nine pairs up every stem
+  const StemmedHerb nettle{"nettle", nettle_pair_mask(), kNettlePairFill, kMinNettleStems, 32, 6, 9, 0.05f, 1.15f};
+  // Urtica dioica: leaves 4-15 cm long (5-10 typically; smaller at the top), so a pair 8-32 cm across.
+  expect_spans(stemmed_herb_spans(nettle, tops), 0.075f, 0.3f, 0.13f, 0.21f);
+  for (float top : tops) EXPECT_GT(top, 0.45f);  // knee-high stands
+  const Asset first = make_asset(factory("nettle"), kDefaultAssetSeed, 0);
+  for (const MeshPart& p : first.lods()[0].parts) EXPECT_EQ(p.material, Material::Fern);  // dies back in winter
+}
+
+TEST(Understory, NettlePairsAreTwoOppositeToothedLeaves) {
+  const AlphaMask& m = *nettle_pair_mask();
+  ASSERT_EQ(m.width, kNettleMaskSize);
+  const auto opaque = [&](float deg, float r) { return opaque_at(m, deg, r); };
+  int leaves = 0;
+  for (int deg = 0; deg < 360; deg += 3) leaves += opaque(float(deg), 0.2f) && !opaque(float(deg) - 3.0f, 0.2f);
+  EXPECT_EQ(leaves, 2);  // one leaf each way
+  for (float deg : {90.0f, 270.0f}) {
+    EXPECT_TRUE(opaque(deg, 0.2f)) << deg;   // the blade
+    EXPECT_TRUE(opaque(deg, 0.36f)) << deg;  // the drawn-out tip
+    EXPECT_FALSE(opaque(deg + 90.0f, 0.2f)) << deg;  // nothing across the stem
+  }
+  // The right leaf's upper edge, column by column, rises and falls with its teeth (a smooth leaf's edge turns once).
+  int last = 0, turns = 0, step = 0;
+  for (int x = int(0.56f * float(m.width)); x < int(0.94f * float(m.width)); ++x) {
+    int top = m.height / 2;
+    for (int y = 0; y < m.height / 2; ++y)
+      if (m.alpha[size_t(y * m.width + x)] != 0) {
+        top = y;
+        break;
+      }
+    if (last != 0 && top != last) {
+      const int dir = top > last ? 1 : -1;
+      turns += step < 0 && dir > 0;
+      step = dir;
+    }
+    last = top;
+  }
+  EXPECT_GE(turns, 5);  // one per tooth: the mask has eight a side
 }
 
 TEST(Understory, GroundCoverIsSmallCheapAndLabelledGround) {

@@ -93,11 +93,14 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
   for (const auto& [key, n] : mixed)
     if (key.first == AssetKind::ConiferTree || key.first == AssetKind::BroadleafTree) species.insert(key.second);
   EXPECT_EQ(species.size(), 6u);
-  // Wood sorrel and woodruff grow beside the ferns in the mixed stand; neither on the pine heath, no woodruff
-  // under spruce.
+  // Wood sorrel, woodruff and nettle grow beside the ferns in the mixed stand; none of them on the pine heath,
+  // no woodruff or nettle under spruce, no nettle in the beech hall.
   EXPECT_GT(mixed.count({AssetKind::Fern, "wood_sorrel"}), 0u);
   EXPECT_GT(mixed.count({AssetKind::Fern, "woodruff"}), 0u);
   EXPECT_GT(mixed.count({AssetKind::Fern, "fern"}), 0u);
+  EXPECT_GT(mixed.count({AssetKind::Fern, "nettle"}), 0u);
+  for (const char* forest : {"pine_heath", "spruce_plantation", "beech_hall"})
+    EXPECT_FALSE(grows(forest_type_of(forest, 0).herbs, "nettle")) << forest;
   EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "wood_sorrel"));
   EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "woodruff"));
   EXPECT_FALSE(grows(forest_type_of("spruce_plantation", 0).herbs, "woodruff"));
