@@ -177,6 +177,13 @@ bool opaque_at(const AlphaMask& m, float deg, float r) {
   return m.alpha[size_t(y * m.width + x)] != 0;
 }
 
+/// Separate opaque runs on the circle `r` mask units round a square mask's centre, sampled every 3 degrees.
+int leaves_round(const AlphaMask& m, float r) {
+  int leaves = 0;
+  for (int deg = 0; deg < 360; deg += 3) leaves += opaque_at(m, float(deg), r) && !opaque_at(m, float(deg) - 3.0f, r);
+  return leaves;
+}
+
 TEST(Understory, WoodSorrelCarpetsLowLeavesOfBotanicalSize) {
   std::vector<float> spans;
   for (uint32_t v = 0; v < factory("wood_sorrel").variants; ++v) {
@@ -261,9 +268,7 @@ TEST(Understory, WoodruffWhorlsAreEightNarrowLeaves) {
   const AlphaMask& m = *woodruff_whorl_mask();
   ASSERT_EQ(m.width, kWoodruffMaskSize);
   const auto opaque = [&](float deg, float r) { return opaque_at(m, deg, r); };
-  int leaves = 0;
-  for (int deg = 0; deg < 360; deg += 3) leaves += opaque(float(deg), 0.3f) && !opaque(float(deg) - 3.0f, 0.3f);
-  EXPECT_EQ(leaves, kWoodruffWhorlLeaves);  // separate leaves round the stem, 0.3 of the side out
+  EXPECT_EQ(leaves_round(m, 0.3f), kWoodruffWhorlLeaves);  // separate leaves round the stem, 0.3 of the side out
   int covered = 0;
   for (int deg = 0; deg < 360; deg += 3) covered += opaque(float(deg), 0.3f);
   EXPECT_LT(covered, 60);  // narrow: under half the circle is leaf
@@ -283,9 +288,7 @@ TEST(Understory, NettlePairsAreTwoOppositeToothedLeaves) {
   const AlphaMask& m = *nettle_pair_mask();
   ASSERT_EQ(m.width, kNettleMaskSize);
   const auto opaque = [&](float deg, float r) { return opaque_at(m, deg, r); };
-  int leaves = 0;
-  for (int deg = 0; deg < 360; deg += 3) leaves += opaque(float(deg), 0.2f) && !opaque(float(deg) - 3.0f, 0.2f);
-  EXPECT_EQ(leaves, 2);  // one leaf each way
+  EXPECT_EQ(leaves_round(m, 0.2f), 2);  // one leaf each way
   for (float deg : {90.0f, 270.0f}) {
     EXPECT_TRUE(opaque(deg, 0.2f)) << deg;   // the blade
     EXPECT_TRUE(opaque(deg, 0.36f)) << deg;  // the drawn-out tip
