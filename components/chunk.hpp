@@ -23,7 +23,12 @@ struct PinnedChunks {
 
 /// Resource: the chunks the active camera's view needs this frame (sorted, unique).
 struct ViewChunks {
-  std::vector<ChunkCoord> coords;  ///< Frustum chunks plus the shadow-caster disc.
+  std::vector<ChunkCoord> coords;  ///< Frustum chunks plus the shadow-caster disc: what the camera's scene holds.
+  /// Those of every view of the frame's fan (world/view_fan.hpp), a superset of coords: what its shared sun
+  /// passes draw. Empty for a frame alone at its position.
+  std::vector<ChunkCoord> fan;
+  /// What the frame streams: fan, or coords without one.
+  const std::vector<ChunkCoord>& streamed() const { return fan.empty() ? coords : fan; }
 };
 
 }  // namespace silva

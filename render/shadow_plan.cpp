@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 
+#include "core/error.hpp"
 #include "render/shadow_pass.hpp"
 
 namespace silva::render {
@@ -50,11 +51,16 @@ AABB fit_shadow_box(const AABB& box, const Camera& camera) {
   return fitted;
 }
 
-ShadowPlan plan_shadow(const Camera& camera, float ground_z, double max_elevation, const Vec3d& direction_to_sun) {
-  const AABB full = shadow_box(camera, ground_z, max_elevation);
-  const int full_resolution = shadow_resolution(camera);
+ShadowPlan plan_shadow(std::span<const Camera> views, float ground_z, double max_elevation,
+                       const Vec3d& direction_to_sun) {
+  if (views.empty()) throw InputError("plan_shadow: no views");
+  const AABB full = shadow_box(views.front(), ground_z, max_elevation);
+  const int full_resolution = shadow_resolution(views.front());
   ShadowPlan plan;
-  plan.region = fit_shadow_box(full, camera);
+  for (const Camera& view : views) {
+    const AABB fitted = fit_shadow_box(full, view);
+    if (!fitted.empty()) plan.region.extend(fitted);
+  }
   if (plan.region.empty()) {  // the camera sees nothing of the box: keep a minimal map
     plan.region = full;
     plan.resolution = std::min(kMinShadowResolution, full_resolution);

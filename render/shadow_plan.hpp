@@ -1,6 +1,8 @@
 #pragma once
 /// @file Where a view's sun shadow map goes: the box of surfaces it must cover (the camera-centred
 /// box cut to the view frustum) and its texel count (texel size fixed by the image size).
+#include <span>
+
 #include "core/aabb.hpp"
 #include "core/camera.hpp"
 
@@ -32,8 +34,11 @@ struct ShadowPlan {
   int resolution = 0;  ///< Texels per side: the full box's texel size kept, never more texels.
 };
 
-/// The shadow map of a view lit from `direction_to_sun`; `ground_z` is the terrain height under the
-/// camera and `max_elevation` the terrain's largest height above zero.
-ShadowPlan plan_shadow(const Camera& camera, float ground_z, double max_elevation, const Vec3d& direction_to_sun);
+/// The shadow map of views taken from one position (the first view's; a fan of yaws, or one view) lit from
+/// `direction_to_sun`: its region the union of each view's fit_shadow_box of the shadow_box around them, its
+/// texels the size of the whole box's. `ground_z` is the terrain height under the cameras and
+/// `max_elevation` the terrain's largest height above zero. Throws InputError for no views.
+ShadowPlan plan_shadow(std::span<const Camera> views, float ground_z, double max_elevation,
+                       const Vec3d& direction_to_sun);
 
 }  // namespace silva::render

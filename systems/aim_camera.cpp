@@ -10,6 +10,7 @@
 #include "systems/render_views.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/plan_captures.hpp"
+#include "world/view_fan.hpp"
 #include "world/world_context.hpp"
 
 namespace silva::systems {
@@ -19,6 +20,20 @@ constexpr double kShadowCasterReach = 0.25 * render::kShadowExtent;
 
 std::vector<ChunkCoord> capture_chunks(const Camera& camera, double chunk_size, double lidar_reach) {
   return world::chunks_for_view(camera, chunk_size, std::max(kShadowCasterReach, lidar_reach));
+}
+
+ViewChunks frame_chunks(const world::PlannedFrame& f, double chunk_size, double lidar_reach) {
+  ViewChunks view;
+  view.coords = capture_chunks(f.camera, chunk_size, lidar_reach);
+  if (f.fan_yaws_deg.empty()) return view;
+  for (const Camera& c : world::view_fan(f)) {
+    const std::vector<ChunkCoord> more = capture_chunks(c, chunk_size, lidar_reach);
+    view.fan.insert(view.fan.end(), more.begin(), more.end());
+  }
+  view.fan.insert(view.fan.end(), view.coords.begin(), view.coords.end());
+  std::sort(view.fan.begin(), view.fan.end());
+  view.fan.erase(std::unique(view.fan.begin(), view.fan.end()), view.fan.end());
+  return view;
 }
 
 double lidar_reach(const CaptureSettings& settings) {
@@ -36,13 +51,13 @@ void install_aim_camera(ecs::World& world) {
       .run([](ecs::SystemContext& sys) {
         CaptureQueue& queue = sys.resource<CaptureQueue>();
         ViewChunks& view = sys.resource<ViewChunks>();
-        view.coords.clear();
+        view = ViewChunks{};
         queue.active = queue.pending() ? queue.cameras[queue.next++] : ecs::null_entity;
         if (queue.active.is_null()) return;
         const double chunk_size = sys.resource<const WorldSource>().ctx->chunk_size();
-        const Camera& camera = sys.get<const world::PlannedFrame>(queue.active).camera;
         // A LiDAR sees all around: the disc out to its range, when it is selected.
-        view.coords = capture_chunks(camera, chunk_size, lidar_reach(sys.resource<const CaptureSettings>()));
+        view = frame_chunks(sys.get<const world::PlannedFrame>(queue.active), chunk_size,
+                            lidar_reach(sys.resource<const CaptureSettings>()));
       });
 }
 

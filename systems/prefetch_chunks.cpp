@@ -63,9 +63,9 @@ void install_prefetch_chunks(ecs::World& world) {
         const CaptureQueue& queue = sys.resource<const CaptureQueue>();
         if (queue.active.is_null() || !queue.pending()) return;
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
-        const Camera& next = sys.get<const world::PlannedFrame>(queue.cameras[queue.next]).camera;
+        const world::PlannedFrame& next = sys.get<const world::PlannedFrame>(queue.cameras[queue.next]);
         std::vector<ChunkCoord> missing = sys.resource<const world::ChunkCache>().missing(
-            capture_chunks(next, ctx.chunk_size(), lidar_reach(sys.resource<const CaptureSettings>())));
+            frame_chunks(next, ctx.chunk_size(), lidar_reach(sys.resource<const CaptureSettings>())).streamed());
         if (!missing.empty()) sys.resource<PrefetchedChunks>().start(ctx, std::move(missing));
       });
 }

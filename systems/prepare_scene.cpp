@@ -127,6 +127,20 @@ ChunkRays SceneBuilder::ray_instances(const ChunkContent& chunk, double ground_c
   return out;
 }
 
+namespace {
+/// The contents of view.coords among `streamed` (the contents of view.streamed(), in its order; both sorted).
+std::vector<std::shared_ptr<const ChunkContent>> view_contents(const ViewChunks& view,
+                                                               const std::vector<std::shared_ptr<const ChunkContent>>& streamed) {
+  if (view.fan.empty()) return streamed;
+  std::vector<std::shared_ptr<const ChunkContent>> out;
+  out.reserve(view.coords.size());
+  size_t k = 0;
+  for (size_t i = 0; i < view.fan.size() && k < view.coords.size(); ++i)
+    if (view.fan[i] == view.coords[k]) out.push_back(streamed[i]), ++k;
+  return out;
+}
+}  // namespace
+
 void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& library) {
   world.set_resource(PreparedScene{});
   world.system("prepare_scene")
@@ -137,10 +151,20 @@ void install_prepare_scene(ecs::World& world, const assets::AssetLibrary& librar
       .run([builder = SceneBuilder(library)](ecs::SystemContext& sys) {
         const ecs::Entity camera = sys.resource<const CaptureQueue>().active;
         if (camera.is_null()) return;
-        const auto& coords = sys.resource<const ViewChunks>().coords;
+        const ViewChunks& view = sys.resource<const ViewChunks>();
         const Vec3d eye = sys.get<const world::PlannedFrame>(camera).camera.position();
         const double distance = sys.resource<const WorldSource>().ctx->config.render.ground_cover_distance;
-        sys.resource<PreparedScene>().frame = builder.build(sys.resource<world::ChunkCache>().take(coords), eye, distance);
+        PreparedScene& prepared = sys.resource<PreparedScene>();
+        const auto streamed = sys.resource<world::ChunkCache>().take(view.streamed());
+        prepared.frame = builder.build(view_contents(view, streamed), eye, distance);
+        if (view.fan.empty()) {
+          prepared.fan = nullptr;
+          prepared.fan_coords.clear();
+        } else if (!prepared.fan || prepared.fan_coords != view.fan || prepared.fan_eye != eye) {
+          prepared.fan = std::make_shared<const FrameScene>(builder.build(streamed, eye, distance));
+          prepared.fan_coords = view.fan;
+          prepared.fan_eye = eye;
+        }
       });
 }
 

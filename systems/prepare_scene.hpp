@@ -62,6 +62,14 @@ double ground_cover_cutoff(uint32_t variation, double ground_cover_distance);
 /// Resource: the scene the Render phase draws for the active camera (left as it was without one).
 struct PreparedScene {
   FrameScene frame;  ///< Scene and the chunk contents it points into.
+  /// With a view fan (ViewChunks::fan): the scene of the fan's chunks, which the frame's sun passes draw so
+  /// that every frame of the fan gets the same shadow map; kept while the fan's chunks and eye stay the
+  /// same. Null without a fan: the sun passes draw `frame`.
+  std::shared_ptr<const FrameScene> fan;
+  std::vector<ChunkCoord> fan_coords;  ///< The chunks `fan` holds.
+  Vec3d fan_eye = Vec3d::Zero();       ///< The eye `fan` was built for (its ground-cover cut-off).
+  /// The scene the sun passes draw: `fan`, else `frame`'s.
+  const render::Scene& sun_scene() const { return fan ? fan->scene : frame.scene; }
 };
 
 /// Registers "prepare_scene" (phase Prepare): takes the ViewChunks from the ChunkCache resource

@@ -1,6 +1,7 @@
 #include "systems/render_views.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -18,9 +19,34 @@
 #include "systems/prepare_scene.hpp"
 #include "world/stereo_rig.hpp"
 #include "world/terrain.hpp"
+#include "world/view_fan.hpp"
 #include "world/world_context.hpp"
 
 namespace silva::systems {
+
+bool SunKey::operator==(const SunKey& o) const {
+  return scene == o.scene && region.min == o.region.min && region.max == o.region.max && resolution == o.resolution &&
+         to_sun == o.to_sun;
+}
+
+std::shared_ptr<const SunMaps> SunCache::find(const SunKey& key) const {
+  return key_ && *key_ == key ? last_ : nullptr;
+}
+
+std::shared_ptr<SunMaps> SunCache::take() {
+  for (const std::shared_ptr<SunMaps>& maps : pool_) {
+    if (maps.use_count() != 1) continue;
+    // The last holder dropped its reference with a release; this fence orders its reads before our writes.
+    std::atomic_thread_fence(std::memory_order_acquire);
+    return maps;
+  }
+  return pool_.emplace_back(std::make_shared<SunMaps>());
+}
+
+void SunCache::keep(SunKey key, std::shared_ptr<const SunMaps> maps) {
+  key_ = std::move(key);
+  last_ = std::move(maps);
+}
 
 std::shared_ptr<FrameWork> FrameSlots::take() {
   std::unique_ptr<FrameWork> w;
@@ -62,38 +88,43 @@ void render_right(const render::Scene& scene, const render::RenderOptions& optio
   render_camera(scene, right.frame.camera, options, renderer, right);
 }
 
-/// Draws `region` straight down (objects of canopy size only, kCanopyTexel texels) into work.overhead and
-/// makes work.canopy from it.
+/// Draws `region` straight down (objects of canopy size only, kCanopyTexel texels) into maps.overhead and
+/// makes maps.canopy from it.
 void map_canopy(const render::Scene& scene, const world::WorldContext& ctx, const AABB& region,
-                render::RenderOptions options, render::Renderer& renderer, FrameWork& work) {
+                render::RenderOptions options, render::Renderer& renderer, SunMaps& maps) {
   const Vec3f extent = region.max - region.min;
   const int resolution =
       std::clamp(int(std::ceil(double(std::max(extent.x(), extent.y())) / render::kCanopyTexel)), 16, 1024);
   options.min_radius = render::kCanopyMinRadius;
-  renderer.render_shadow_map(scene, Vec3d::UnitZ(), region, resolution, options, work.overhead);
-  work.canopy = render::build_canopy_map(
-      work.overhead, [&](double x, double y) { return double(world::terrain_height(ctx.terrain, x, y)); });
+  renderer.render_shadow_map(scene, Vec3d::UnitZ(), region, resolution, options, maps.overhead);
+  maps.canopy = render::build_canopy_map(
+      maps.overhead, [&](double x, double y) { return double(world::terrain_height(ctx.terrain, x, y)); });
 }
 
-}  // namespace
-
-namespace {
-/// Renders the sun's shadow map and the canopy map over it for `work`'s left camera into `work`.
-void render_sun(const render::Scene& scene, const world::WorldContext& ctx, const render::RenderOptions& options,
-                render::Renderer& renderer, FrameWork& work) {
+/// Gives `work` the sun maps of its view fan (its left camera alone without one): the cached ones when the
+/// fan's first frame drew them, else drawn now from scene.sun_scene().
+void render_sun(const PreparedScene& scene, const world::WorldContext& ctx, const render::RenderOptions& options,
+                render::Renderer& renderer, SunCache& cache, FrameWork& work) {
   const Stopwatch clock;
-  const Camera& camera = work.frame.camera;
   const Vec3d sun = render::sun_direction(work.lighting.preset).cast<double>();
-  const Vec3d p = camera.position();
+  const Vec3d p = work.frame.camera.position();
   const float ground_z = world::terrain_height(ctx.terrain, p.x(), p.y());
-  const render::ShadowPlan plan = render::plan_shadow(camera, ground_z, ctx.config.terrain.max_elevation, sun);
-  renderer.render_shadow_map(scene, sun, plan.region, plan.resolution, options, work.shadow);
-  map_canopy(scene, ctx, render::canopy_region(plan.region), options, renderer, work);
+  const std::vector<Camera> views = world::view_fan(work.frame);
+  const render::ShadowPlan plan = render::plan_shadow(views, ground_z, ctx.config.terrain.max_elevation, sun);
+  const SunKey key{scene.fan, plan.region, plan.resolution, sun};
+  work.sun = scene.fan ? cache.find(key) : nullptr;
+  if (!work.sun) {
+    const std::shared_ptr<SunMaps> maps = cache.take();
+    renderer.render_shadow_map(scene.sun_scene(), sun, plan.region, plan.resolution, options, maps->shadow);
+    map_canopy(scene.sun_scene(), ctx, render::canopy_region(plan.region), options, renderer, *maps);
+    if (scene.fan) cache.keep(key, maps);
+    work.sun = maps;
+  }
   work.shadow_s = clock.seconds();
 }
 }  // namespace
 
-void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
+void render_frame(const PreparedScene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   std::span<const CameraSensor> cameras, FrameSlots& slots, FrameWork& work) {
   work.lighting = render::frame_lighting(settings.lighting, uint64_t(ctx.config.seed), work.frame.sequence,
                                          uint64_t(work.frame.frame));
@@ -102,20 +133,21 @@ void render_frame(const render::Scene& scene, const world::WorldContext& ctx, co
   const auto draw_cameras = [&] {
     for (const CameraSensor& sensor : cameras) {
       if (sensor.right)
-        render_right(scene, options, sensor.baseline_m, *slots.renderer, work);
+        render_right(scene.frame.scene, options, sensor.baseline_m, *slots.renderer, work);
       else
-        render_camera(scene, work.frame.camera, options, *slots.renderer, work);
+        render_camera(scene.frame.scene, work.frame.camera, options, *slots.renderer, work);
     }
   };
   if (!settings.outputs.has(io::OutputType::Rgb)) {
     draw_cameras();
+    work.sun = nullptr;
     work.shadow_s = 0;
   } else if (tbb::this_task_arena::max_concurrency() < kThreadsForSunBeside) {
     draw_cameras();
-    render_sun(scene, ctx, options, *slots.renderer, work);
+    render_sun(scene, ctx, options, *slots.renderer, slots.sun_maps, work);
   } else {
     if (!slots.sun_renderer) slots.sun_renderer = std::make_unique<render::Renderer>();
-    tbb::parallel_invoke(draw_cameras, [&] { render_sun(scene, ctx, options, *slots.sun_renderer, work); });
+    tbb::parallel_invoke(draw_cameras, [&] { render_sun(scene, ctx, options, *slots.sun_renderer, slots.sun_maps, work); });
   }
 }
 
@@ -139,7 +171,7 @@ void install_render_views(ecs::World& world, CaptureSettings settings) {
         std::shared_ptr<FrameWork> work = slots.take();
         work->frame = sys.get<const world::PlannedFrame>(camera);
         work->files.clear();
-        render_frame(sys.resource<const PreparedScene>().frame.scene, *sys.resource<const WorldSource>().ctx,
+        render_frame(sys.resource<const PreparedScene>(), *sys.resource<const WorldSource>().ctx,
                      sys.resource<const CaptureSettings>(), cameras, slots, *work);
         slots.current = std::move(work);
       });

@@ -1,11 +1,12 @@
 #pragma once
-/// @file Render phase: the active camera's visibility pass and sun shadow map into a frame slot
-/// (system "render_views"), and the frame slots that carry a frame on to the Write phase.
+/// @file Render phase: the active camera's visibility pass and sun maps into a frame slot (system "render_views"),
+/// the frame slots that carry a frame on to the Write phase, and the cache that lets a view fan share its sun maps.
 #include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -17,10 +18,12 @@
 #include "io/dataset_card.hpp"
 #include "io/output_types.hpp"
 #include "raycast/lidar.hpp"
-#include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
 #include "render/frame_lighting.hpp"
+#include "core/aabb.hpp"
+#include "render/canopy_map.hpp"
 #include "render/renderer.hpp"
+#include "systems/prepare_scene.hpp"
 #include "world/plan_captures.hpp"
 
 namespace silva::systems {
@@ -41,6 +44,40 @@ struct CaptureSettings {
   double stereo_baseline_m = 0;      ///< Baseline of the stereo pair's right camera, metres (0: one camera).
 };
 
+/// A view's sun passes.
+struct SunMaps {
+  render::ShadowMap shadow;    ///< The sun shadow map.
+  render::ShadowMap overhead;  ///< The region drawn straight down (the canopy map's source).
+  render::CanopyMap canopy;    ///< The canopy over the view (sky light under trees).
+};
+
+/// What a set of sun maps was drawn from: the same key, the same maps bit for bit.
+struct SunKey {
+  std::shared_ptr<const FrameScene> scene;  ///< The fan's scene (held, so its address names it alone).
+  AABB region;                              ///< The shadow map's region (the canopy map's follows from it).
+  int resolution = 0;                       ///< Its texels per side.
+  Vec3d to_sun = Vec3d::Zero();             ///< Direction towards the sun.
+  /// True when every field is equal (the scene by address).
+  bool operator==(const SunKey& o) const;
+};
+
+/// Recycled sun maps, and the last view fan's maps with their key. Used by one thread at a time (the Render
+/// phase); frames holding maps may drop them on any thread.
+class SunCache {
+ public:
+  /// The last kept maps when `key` is theirs, else null.
+  std::shared_ptr<const SunMaps> find(const SunKey& key) const;
+  /// Maps no frame holds, to draw into: a recycled set when one is free, else a new one.
+  std::shared_ptr<SunMaps> take();
+  /// Keeps `maps`, drawn from `key`, for find().
+  void keep(SunKey key, std::shared_ptr<const SunMaps> maps);
+
+ private:
+  std::vector<std::shared_ptr<SunMaps>> pool_;  ///< Every set made; free when the pool holds its only reference.
+  std::optional<SunKey> key_;                   ///< What last_ was drawn from.
+  std::shared_ptr<const SunMaps> last_;         ///< The last kept maps.
+};
+
 /// One frame travelling from Render through Write; its buffers are reused across frames.
 struct FrameWork {
   world::PlannedFrame frame;         ///< The planned capture.
@@ -49,9 +86,7 @@ struct FrameWork {
   render::GBuffer gbuffer;           ///< Labels, depth, normals.
   std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
   std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.
-  render::ShadowMap shadow;          ///< The view's sun shadow map.
-  render::ShadowMap overhead;        ///< The view's region drawn straight down (the canopy map's source).
-  render::CanopyMap canopy;          ///< The canopy over the view (sky light under trees).
+  std::shared_ptr<const SunMaps> sun;  ///< The view's sun passes (with rgb; shared by the frames of a view fan).
   io::EncodedSet files;              ///< Encoded outputs.
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
   uint64_t triangles_submitted = 0, triangles_rasterised = 0;    ///< Camera pass work counts.
@@ -76,6 +111,7 @@ class FrameSlots {
   /// The sun's passes (shadow map, canopy map) while `renderer` draws the cameras, made on first use from
   /// kThreadsForSunBeside threads (null below: `renderer` draws them after the cameras).
   std::unique_ptr<render::Renderer> sun_renderer;
+  SunCache sun_maps;                  ///< The frames' sun maps, recycled, and the last view fan's.
   std::shared_ptr<FrameWork> current; ///< The slot the Render phase filled this frame (or null).
 
  private:
@@ -90,11 +126,12 @@ class FrameSlots {
 /// about 110 MB to a 720p run, which fewer threads do not repay).
 inline constexpr int kThreadsForSunBeside = 4;
 
-/// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from `scene` with `slots.renderer` — the
-/// left camera's into `work`, a stereo pair's right camera's into work.right — and, when rgb is selected, the
-/// left camera's shadow map and canopy map: from kThreadsForSunBeside threads at the same time with
-/// `slots.sun_renderer`, else afterwards with `slots.renderer`.
-void render_frame(const render::Scene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
+/// Renders the G-buffer of each of `cameras` (left first) for `work.frame` from scene.frame with `slots.renderer` —
+/// the left camera's into `work`, a stereo pair's right camera's into work.right — and, when rgb is selected, the
+/// left camera's sun maps (shadow map and canopy map) from scene.sun_scene(): from kThreadsForSunBeside threads at
+/// the same time with `slots.sun_renderer`, else afterwards with `slots.renderer`. The frames of a view fan share
+/// one set of sun maps, planned over all the fan's views and drawn by the first of them.
+void render_frame(const PreparedScene& scene, const world::WorldContext& ctx, const CaptureSettings& settings,
                   std::span<const CameraSensor> cameras, FrameSlots& slots, FrameWork& work);
 
 /// Registers "render_views" (phase Render): when a camera is active, renders the PreparedScene

@@ -31,7 +31,7 @@ std::vector<ChunkCoord> halo_of(const std::vector<ChunkCoord>& full, int ring) {
 /// sorted, with their terrain's coarse level), else spawns chunk entities for those.
 void stream(ecs::SystemContext& sys) {
   const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
-  std::vector<ChunkCoord> needed = sys.resource<const ViewChunks>().coords;
+  std::vector<ChunkCoord> needed = sys.resource<const ViewChunks>().streamed();
   const auto& pinned = sys.resource<const PinnedChunks>().coords;
   needed.insert(needed.end(), pinned.begin(), pinned.end());
   world::ChunkCache& cache = sys.resource<world::ChunkCache>();

@@ -190,12 +190,12 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
   const render::FrameLighting& lighting = work.lighting;
   const std::string noise_stream = io::camera_folder(f.sequence, f.right);
   const render::ShadeInputs in{work.gbuffer,     f.camera,
-                               lighting.preset,  &sun.shadow,
+                               lighting.preset,  &sun.sun->shadow,
                                uint64_t(ctx.config.seed), noise_stream,
                                uint64_t(f.frame), frame_camera_model(ctx.config, f),
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
                                lighting.white_balance, floor_look(ctx),
-                               ev100,            &sun.canopy,
+                               ev100,            &sun.sun->canopy,
                                ctx.trail_surface, ctx.config.camera.antialias};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;

@@ -54,6 +54,7 @@ PlannedFrame autopilot_frame(const WorldContext& ctx, int i, size_t k, double s)
   PlannedFrame f = make_frame(ctx, "autopilot", int(i * yaws.size() + k), Vec3d(p.x(), p.y(), ground + height),
                               wrap_degrees(heading + yaws[k]), pitch, 0.0, c.captures.aerial);
   f.trail_s = s;
+  for (const double yaw : yaws) f.fan_yaws_deg.push_back(wrap_degrees(heading + yaw));
   return f;
 }
 

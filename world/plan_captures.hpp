@@ -32,6 +32,9 @@ struct PlannedFrame {
   bool aerial = false;            ///< Aerial perspective.
   Camera camera;                  ///< Intrinsics, pose, near/far.
   double yaw_deg = 0, pitch_deg = 0, roll_deg = 0;  ///< Pose angles (CONTRACT.md convention).
+  /// Yaws of every frame taken from this frame's position (an autopilot point: one per configured yaw, this
+  /// frame's among them), which share one sun shadow map; empty for a frame alone at its position.
+  std::vector<double> fan_yaws_deg;
   std::optional<double> trail_s;  ///< Arc length along the trail (autopilot and trajectory only).
   PoseFix pose_fix = PoseFix::Clear;  ///< Whether the clearance search moved the pose.
   std::optional<ExposureMotion> exposure_motion;  ///< Camera motion while the shutter is open (motion blur), or still.

@@ -73,7 +73,7 @@ TEST(ShadowPlan, KeepsTheFullBoxTexelSizeWithFewerTexels) {
   const Vec3d to_sun = Vec3d(0.4, -0.3, 0.8).normalized();
   for (double yaw : {0.0, 30.0, 135.0, 250.0}) {
     const Camera cam = view(Vec3d(5, 5, 2), yaw, -5.0);
-    const ShadowPlan plan = plan_shadow(cam, ground_z, max_elevation, to_sun);
+    const ShadowPlan plan = plan_shadow({&cam, 1}, ground_z, max_elevation, to_sun);
     const AABB full = shadow_box(cam, ground_z, max_elevation);
     const double full_texel = shadow_map_frame(to_sun, full, shadow_resolution(cam)).texel_size;
     const double texel = shadow_map_frame(to_sun, plan.region, plan.resolution).texel_size;
