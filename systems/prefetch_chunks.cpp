@@ -51,6 +51,14 @@ const std::vector<ChunkCoord>& PrefetchedChunks::started() const {
   return batch_ ? batch_->coords : none;
 }
 
+namespace {
+/// True when `f` is another frame of `active`'s view fan (same position, same fan).
+bool same_fan(const world::PlannedFrame& f, const world::PlannedFrame& active) {
+  return !f.fan_yaws_deg.empty() && f.fan_yaws_deg == active.fan_yaws_deg &&
+         f.camera.position() == active.camera.position();
+}
+}  // namespace
+
 void install_prefetch_chunks(ecs::World& world) {
   if (!world.has_resource<PrefetchedChunks>()) world.set_resource(PrefetchedChunks{});
   world.system("prefetch_chunks")
@@ -61,12 +69,17 @@ void install_prefetch_chunks(ecs::World& world) {
       .reads<world::PlannedFrame>()
       .run([](ecs::SystemContext& sys) {
         const CaptureQueue& queue = sys.resource<const CaptureQueue>();
-        if (queue.active.is_null() || !queue.pending()) return;
+        PrefetchedChunks& prefetched = sys.resource<PrefetchedChunks>();
+        if (queue.active.is_null() || !queue.pending() || !prefetched.started().empty()) return;
         const world::WorldContext& ctx = *sys.resource<const WorldSource>().ctx;
-        const world::PlannedFrame& next = sys.get<const world::PlannedFrame>(queue.cameras[queue.next]);
+        const world::PlannedFrame& active = sys.get<const world::PlannedFrame>(queue.active);
+        size_t k = queue.next;  // past the rest of the active frame's fan: those stream nothing new
+        while (k + 1 < queue.cameras.size() && same_fan(sys.get<const world::PlannedFrame>(queue.cameras[k]), active)) ++k;
         std::vector<ChunkCoord> missing = sys.resource<const world::ChunkCache>().missing(
-            frame_chunks(next, ctx.chunk_size(), lidar_reach(sys.resource<const CaptureSettings>())).streamed());
-        if (!missing.empty()) sys.resource<PrefetchedChunks>().start(ctx, std::move(missing));
+            frame_chunks(sys.get<const world::PlannedFrame>(queue.cameras[k]), ctx.chunk_size(),
+                         lidar_reach(sys.resource<const CaptureSettings>()))
+                .streamed());
+        if (!missing.empty()) prefetched.start(ctx, std::move(missing));
       });
 }
 

@@ -45,8 +45,9 @@ class PrefetchedChunks {
 };
 
 /// Registers "prefetch_chunks" (phase Prepare, after prepare_scene) and its PrefetchedChunks resource: when a
-/// camera follows the active one in the CaptureQueue, starts generating the chunks its view needs that the
-/// cache lacks, so they are made while the active frame renders.
+/// camera follows the active one in the CaptureQueue and none are being made, starts generating the chunks the
+/// cache lacks for the next camera that is not of the active frame's view fan (those stream nothing new), so
+/// they are made while the active frame (and the rest of its fan) renders.
 void install_prefetch_chunks(ecs::World& world);
 
 }  // namespace silva::systems

@@ -36,12 +36,12 @@ void stream(ecs::SystemContext& sys) {
   needed.insert(needed.end(), pinned.begin(), pinned.end());
   world::ChunkCache& cache = sys.resource<world::ChunkCache>();
   const std::vector<ChunkCoord> full = cache.missing(needed);
+  if (full.empty()) return;  // chunks being made stay for the frame they are for
   std::vector<std::shared_ptr<ChunkContent>> ready = sys.resource<PrefetchedChunks>().take(full);
   if (!ready.empty()) {
     cache.insert(std::move(ready));
     return;
   }
-  if (full.empty()) return;
   ecs::CommandBuffer& cb = sys.commands();
   for (ChunkCoord c : full) {
     ChunkContent content;
