@@ -5,10 +5,14 @@
 #include <algorithm>
 #include <bit>
 
+#include "components/camera.hpp"
+#include "components/phase.hpp"
 #include "core/error.hpp"
 #include "pipeline/schedule/world_schedule.hpp"
 #include "render/shadow_plan.hpp"
 #include "systems/aim_camera.hpp"
+#include "systems/prefetch_chunks.hpp"
+#include "world/chunk_cache.hpp"
 #include "tests/common/test_library.hpp"
 #include "world/view_fan.hpp"
 
@@ -35,7 +39,7 @@ struct FanWorld {
   }
 };
 
-TEST(ViewFan, EveryFrameOfAnAutopointGetsTheSameViewsWithItsOwnAmongThem) {
+TEST(ViewFan, EveryFrameOfAnAutopilotPointGetsTheSameViewsWithItsOwnAmongThem) {
   const FanWorld w;
   ASSERT_EQ(w.frames.size(), 12u);
   for (size_t point = 0; point < 4; ++point) {
@@ -81,6 +85,28 @@ TEST(ViewFan, TheShadowPlanOfAFanCoversEachViewsOwn) {
     EXPECT_GE(shared.resolution, own.resolution);
   }
   EXPECT_THROW(render::plan_shadow({}, 0.0f, 6.0, to_sun), InputError);
+}
+
+TEST(ViewFan, TheNextPointsChunksAreMadeWhileTheWholeFanRendersAndHandedOverAtItsFirstFrame) {
+  const FanWorld w;
+  pipeline::WorldSchedule schedule(w.ctx, 256);
+  CaptureQueue& queue = schedule.ecs().resource<CaptureQueue>();
+  for (size_t k = 0; k < 6; ++k) queue.cameras.push_back(schedule.ecs().spawn(world::PlannedFrame(w.frames[k])));
+  const auto& prefetched = schedule.ecs().resource<PrefetchedChunks>();
+  const auto& cache = schedule.ecs().resource<world::ChunkCache>();
+  schedule.ecs().run_phases(Phase::Stream, Phase::Prepare);  // point 0, first yaw: its fan streamed
+  const std::vector<ChunkCoord> next = cache.missing(frame_chunks(w.frames[3], w.ctx.chunk_size(), 0.0).streamed());
+  ASSERT_FALSE(next.empty());
+  EXPECT_EQ(prefetched.started(), next);  // point 1's, not the next yaw's (which lacks nothing)
+  const size_t generated = cache.generated();
+  for (int yaw = 1; yaw < 3; ++yaw) {  // the rest of the fan streams nothing and keeps the batch
+    schedule.ecs().run_phases(Phase::Stream, Phase::Prepare);
+    EXPECT_EQ(prefetched.started(), next) << yaw;
+    EXPECT_EQ(cache.generated(), generated) << yaw;
+  }
+  schedule.ecs().run_phases(Phase::Stream, Phase::Prepare);  // point 1: the batch goes into the cache
+  EXPECT_TRUE(cache.missing(next).empty());
+  EXPECT_EQ(cache.generated(), generated + next.size());
 }
 
 TEST(ViewFan, AFansFramesShareSunMapsDrawnOnceThatEqualFreshlyDrawnOnes) {
