@@ -56,15 +56,19 @@ std::vector<world::PlannedFrame> random_frames(WarmWorld& w, int count, int widt
   return world::plan_random(sized, w.schedule->ecs().resource<world::ChunkCache>());
 }
 
-/// `count` autopilot frames spread evenly over the whole autopilot (all of them when count is 0
-/// or not smaller), and the number of frames of the whole autopilot.
+/// About `count` autopilot frames: whole points (every yaw of each, as the autopilot captures them, sharing
+/// their sun maps) spread evenly over the trail, at least one (all of them when count is 0 or not smaller);
+/// and the number of frames of the whole autopilot.
 std::pair<std::vector<world::PlannedFrame>, size_t> autopilot_frames(const WarmWorld& w, int count) {
   std::vector<world::PlannedFrame> all = world::plan_autopilot(w.world);
   const size_t n = all.size();
   if (count <= 0 || size_t(count) >= n) return {std::move(all), n};
+  const size_t yaws = std::max<size_t>(1, w.world.config.captures.autopilot_yaws.size());
+  const size_t points = n / yaws, chosen = std::max<size_t>(1, size_t(count) / yaws);
   std::vector<world::PlannedFrame> subset;
-  subset.reserve(size_t(count));
-  for (int k = 0; k < count; ++k) subset.push_back(all[size_t(k) * n / size_t(count)]);
+  subset.reserve(chosen * yaws);
+  for (size_t k = 0; k < chosen; ++k)
+    for (size_t y = 0; y < yaws; ++y) subset.push_back(all[(k * points / chosen) * yaws + y]);
   return {std::move(subset), n};
 }
 
