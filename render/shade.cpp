@@ -39,10 +39,11 @@ constexpr float kAoReuseDepth = 0.05f;
 /// Screen-space AO evaluated at the even pixels (2x, 2y) only (-1 where that pixel saw the sky).
 struct HalfResAo {
   int width = 0, height = 0;  ///< Half-resolution size (rounded up).
-  std::vector<float> ao;      ///< Row-major, width * height.
+  std::vector<float>& ao;     ///< Row-major, width * height.
 
-  /// Evaluates the samples in parallel rows.
-  HalfResAo(const GBuffer& g, const Camera& camera) : width((g.width + 1) / 2), height((g.height + 1) / 2) {
+  /// Evaluates the samples in parallel rows into `storage` (kept by the caller for later frames).
+  HalfResAo(const GBuffer& g, const Camera& camera, std::vector<float>& storage)
+      : width((g.width + 1) / 2), height((g.height + 1) / 2), ao(storage) {
     ao.resize(size_t(width) * size_t(height));
     tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
       for (int y = rows.begin(); y < rows.end(); ++y) {
@@ -301,12 +302,16 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     canopy_share_row(*in.canopy, &eye, 1, &canopy_at_camera);
   }
   const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera);
-  const HalfResAo half_ao(g, in.camera);
+  ShadeScratch own;  // this call's buffers when the caller keeps none
+  ShadeScratch& scratch = in.scratch ? *in.scratch : own;
+  const HalfResAo half_ao(g, in.camera, scratch.ao);
   const RowShading shading{in, sky, fog, look, lighting, half_ao};
   const bool soften = in.mask_coverage && has_minified_masks(g);  // the blend reads the rows above and below
   const bool deferred = needs_whole_frame(in.model) || metered;   // metering and optics need every row first
-  LinearFrame frame, finished;  // shaded rows (when blended or deferred); blended rows (when both)
-  if (soften || deferred) frame.resize(g.width, g.height);
+  LinearFrame& frame = scratch.frame;        // shaded rows (when blended or deferred)
+  LinearFrame& finished = scratch.finished;  // blended rows (when both)
+  const bool whole = soften || deferred;
+  if (whole) frame.resize(g.width, g.height);
   if (soften && deferred) finished.resize(g.width, g.height);
   tbb::enumerable_thread_specific<RowWorker> workers([&] {
     RowWorker w{RowTerms(g.width), std::vector<Vec3f>(size_t(g.width)), std::nullopt, std::nullopt};
@@ -315,7 +320,7 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
     return w;
   });
   const auto shaded_row = [&](RowWorker& w, int v) {
-    return frame.rgb.empty() ? w.row.data() : &frame.rgb[size_t(v) * size_t(g.width)];
+    return whole ? &frame.rgb[size_t(v) * size_t(g.width)] : w.row.data();
   };
   const auto finish = [&](RowWorker& w, int v) {  // blend, weather overlay, then encode or keep for the frame
     const size_t row = size_t(v) * size_t(g.width);

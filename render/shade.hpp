@@ -10,12 +10,20 @@
 #include "core/trail_surface.hpp"
 #include "render/canopy_map.hpp"
 #include "render/gbuffer.hpp"
+#include "render/linear_frame.hpp"
 #include "render/lighting.hpp"
 #include "render/materials.hpp"
 
 namespace silva::render {
 
 /// Everything shade_rgb reads. `shadow` may be null (no sun shadows).
+/// Whole-frame buffers shading keeps from one call to the next (sized on use), so a run's frames reuse their memory.
+struct ShadeScratch {
+  LinearFrame frame;     ///< Shaded rows, when the coverage blend or the camera's optics need whole frames.
+  LinearFrame finished;  ///< Blended rows, when both do.
+  std::vector<float> ao; ///< Half-resolution ambient occlusion samples.
+};
+
 struct ShadeInputs {
   const GBuffer& gbuffer;         ///< The view's resolved surfaces (depth 0 = sky).
   const Camera& camera;           ///< The view's camera (same size as the G-buffer).
@@ -35,6 +43,7 @@ struct ShadeInputs {
   const CanopyMap* canopy = nullptr;  ///< The canopy over the view (sky light under trees), or none.
   TrailSurface trail_surface = TrailSurface::PackedEarth;  ///< How the trail looks (trail.surface).
   bool mask_coverage = true;  ///< Blend pixels of minified alpha masks to their coverage (render/foliage_aa.hpp).
+  ShadeScratch* scratch = nullptr;  ///< Buffers to reuse across calls, or none (this call allocates its own).
 };
 
 /// What shading saw, for the run's statistics.

@@ -23,6 +23,7 @@
 #include "core/aabb.hpp"
 #include "render/canopy_map.hpp"
 #include "render/renderer.hpp"
+#include "render/shade.hpp"
 #include "systems/prepare_scene.hpp"
 #include "world/plan_captures.hpp"
 
@@ -86,6 +87,7 @@ struct FrameWork {
   render::GBuffer gbuffer;           ///< Labels, depth, normals.
   std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
   std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.
+  render::ShadeScratch shade_scratch;  ///< Shading's whole-frame buffers, kept for the slot's next frame.
   std::shared_ptr<const SunMaps> sun;  ///< The view's sun passes (with rgb; shared by the frames of a view fan).
   io::EncodedSet files;              ///< Encoded outputs.
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.

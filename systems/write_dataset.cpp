@@ -200,7 +200,8 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
                                lighting.auto_exposure, lighting.exposure_compensation_ev,
                                lighting.white_balance, floor_look(ctx),
                                ev100,            &sun.sun->canopy,
-                               ctx.trail_surface, ctx.config.camera.antialias};
+                               ctx.trail_surface, ctx.config.camera.antialias,
+                               &work.shade_scratch};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;
