@@ -30,6 +30,7 @@ ViewChunks frame_chunks(const world::PlannedFrame& f, double chunk_size, double 
     const std::vector<ChunkCoord> more = capture_chunks(c, chunk_size, lidar_reach);
     view.fan.insert(view.fan.end(), more.begin(), more.end());
   }
+  // The frame's own chunks too: its rebuilt view (view_fan) may round differently at a chunk border.
   view.fan.insert(view.fan.end(), view.coords.begin(), view.coords.end());
   std::sort(view.fan.begin(), view.fan.end());
   view.fan.erase(std::unique(view.fan.begin(), view.fan.end()), view.fan.end());

@@ -117,17 +117,16 @@ void shade_and_encode_view(const world::WorldContext& ctx, const CaptureSettings
 /// camera's view (the left's shadow map and exposure); then lets go of the sun maps (recycled for later frames).
 void shade_and_encode(const world::WorldContext& ctx, const CaptureSettings& settings, FrameWork& work) {
   shade_and_encode_view(ctx, settings, work, work, std::nullopt);
-  if (settings.stereo_baseline_m <= 0) {
-    work.sun = nullptr;
-    return;
+  if (settings.stereo_baseline_m > 0) {
+    const Stopwatch clock;
+    const Camera& camera = work.frame.camera;
+    const std::vector<uint16_t> disparity =
+        io::kitti_disparity(work.gbuffer.depth, camera.fx, settings.stereo_baseline_m);
+    work.files.push_back({io::frame_file("disparity", work.frame.frame, "png"),
+                          io::encode_png_grey16(disparity, camera.width, camera.height)});
+    work.encode_s += clock.seconds();
+    shade_and_encode_view(ctx, settings, *work.right, work, work.ev100);
   }
-  const Stopwatch clock;
-  const Camera& camera = work.frame.camera;
-  const std::vector<uint16_t> disparity = io::kitti_disparity(work.gbuffer.depth, camera.fx, settings.stereo_baseline_m);
-  work.files.push_back({io::frame_file("disparity", work.frame.frame, "png"),
-                        io::encode_png_grey16(disparity, camera.width, camera.height)});
-  work.encode_s += clock.seconds();
-  shade_and_encode_view(ctx, settings, *work.right, work, work.ev100);
   work.sun = nullptr;
 }
 
