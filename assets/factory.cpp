@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "assets/lod.hpp"
+#include "assets/mesh_cache.hpp"
 #include "assets/season_dress.hpp"
 
 namespace silva::assets {
@@ -96,8 +97,11 @@ Asset lazy_asset(const Factory& factory, uint64_t seed, uint32_t variant, Role r
   a.source = ProceduralSource{factory.prefix, variant, seed};
   a.kind = factory.kind;
   a.role = role;
-  a.geometry = std::make_shared<const AssetGeometry>(
-      [&factory, seed, variant, season] { return build_lods(generate_variant(factory, seed, variant, season).mesh).lods; });
+  a.geometry = std::make_shared<const AssetGeometry>([&factory, source = *a.source, season] {
+    return cached_lods(process_mesh_cache(), source, season, [&] {
+      return build_lods(generate_variant(factory, source.seed, source.variant, season).mesh).lods;
+    });
+  });
   a.lod_screen_sizes = std::move(lod_screen_sizes);
   a.proxy = proxy;
   return a;

@@ -5,7 +5,7 @@
 #
 # Reads docs/DESIGN.md, README.md and bench/README.md and takes every backticked token
 # (`...`, outside fenced code blocks) that looks like a repository path: it contains a `/` or
-# ends in .cpp .hpp .toml .json .md .py .sh, does not start with `-` or `/`, is not a URL and
+# ends in .cpp .hpp .toml .json .md .py .sh, does not start with `-`, `/` or `~`, is not a URL and
 # contains no space, `<`, `*`, `{` or `$` (so placeholders are written `<DIR>/library.json`).
 # Left out as well, since they cannot be repository paths: tokens starting with `../` (outside
 # the repository), C++ scopes (`a::b`) and paths git ignores (`build/`, `out/`).
@@ -37,7 +37,7 @@ ignored() {  # does git ignore $1, or the folder it starts with?
 
 is_path() {  # does token $1 look like a repository path?
   case "$1" in
-    '' | -* | /* | ../* | *://* | *' '* | *'<'* | *'*'* | *'{'* | *'$'* | *::*) return 1 ;;
+    '' | -* | /* | '~'* | ../* | *://* | *' '* | *'<'* | *'*'* | *'{'* | *'$'* | *::*) return 1 ;;
   esac
   [[ "$1" == */* ]] && return 0
   case "$1" in

@@ -81,7 +81,9 @@ int run_cli(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 ok, 1 internal error, 2 bad input, 3 I/O failure, 4 verify: dataset below its thresholds,\n"
       "130 interrupted.\n"
-      "Data files are found through $SILVA_DATA, else the folder compiled in.\n"
+      "Data files are found through $SILVA_DATA, else the folder compiled in; the asset library through\n"
+      "$SILVA_ASSETS, else the one built. Generated meshes are kept for later runs in $SILVA_MESH_CACHE\n"
+      "(off: none), else $XDG_CACHE_HOME/silva/meshes, else ~/.cache/silva/meshes.\n"
       "Examples:\n"
       "  silva generate --config configs/demo.toml --overwrite\n"
       "  silva validate --config my.toml --print\n"

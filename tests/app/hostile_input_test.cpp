@@ -13,22 +13,11 @@
 #include <thread>
 
 #include "generate_errors_fixture.hpp"
+#include "tests/common/scoped_env.hpp"
 #include "textured_library.hpp"
 
 namespace silva::test {
 namespace {
-
-/// Sets an environment variable for the lifetime of the object (children inherit it).
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::string& value) : name_(name) { ::setenv(name, value.c_str(), 1); }
-  ~ScopedEnv() { ::unsetenv(name_); }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-};
 
 /// True once process `pid` has a handler for SIGTERM (bit 15 of SigCgt in /proc/<pid>/status).
 bool catches_sigterm(pid_t pid) {
