@@ -17,6 +17,7 @@
 #include "assets/manifest.hpp"
 #include "core/error.hpp"
 #include "core/ontology.hpp"
+#include "assets/mesh_pack.hpp"
 #include "core/png_check.hpp"
 #include "io/camera_json.hpp"
 #include "io/dataset_reader.hpp"
@@ -150,6 +151,15 @@ void imu_csv(std::string_view input) { io::read_euroc_imu_csv(scratch_file("imu.
 /// A trajectory sequence's imu.yaml.
 void imu_yaml(std::string_view input) { io::read_kalibr_imu_yaml(scratch_file("imu.yaml", input)); }
 
+/// A mesh cache entry (assets/mesh_pack.hpp): a pack of meshes, every mask hash found, and the
+/// same bytes as a mask pack; refused when neither reads.
+void mesh_pack(std::string_view input) {
+  static const auto mask = std::make_shared<const AlphaMask>(AlphaMask{2, 2, {0, 255, 128, 254}, 0.5f, 0.0f});
+  const auto lods = assets::unpack_lods(input, [](uint64_t) { return mask; });
+  const auto alone = assets::unpack_mask(input);
+  if (!lods && !alone) throw InputError("mesh pack: refused");
+}
+
 /// A user's TUM trajectory (trajectory.file).
 void trajectory_file(std::string_view input) { io::read_tum_trajectory(scratch_file("walk.txt", input)); }
 
@@ -159,6 +169,7 @@ constexpr FuzzTarget kTargets[] = {
     {"glb", glb},            {"obj", obj},           {"marker", marker},  {"camera_json", camera_json},
     {"png", png},            {"manifest", dataset_manifest}, {"label_png", label_png},
     {"imu_csv", imu_csv},    {"imu_yaml", imu_yaml},     {"trajectory_file", trajectory_file},
+    {"mesh_pack", mesh_pack},
 };
 
 }  // namespace
