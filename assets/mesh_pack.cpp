@@ -44,7 +44,7 @@ struct Writer {
   template <class T>
   void put_array(const std::vector<T>& v) {
     put(uint64_t(v.size()));
-    out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
 };
 
@@ -67,7 +67,7 @@ struct Reader {
     const uint64_t n = get<uint64_t>();
     if (!ok || n > limit || n > in.size() / sizeof(T)) return ok = false, std::vector<T>{};
     std::vector<T> v(n);
-    std::memcpy(static_cast<void*>(v.data()), in.data(), n * sizeof(T));
+    if (n > 0) std::memcpy(static_cast<void*>(v.data()), in.data(), n * sizeof(T));
     in.remove_prefix(n * sizeof(T));
     return v;
   }

@@ -13,7 +13,7 @@ shift 2
 root=$(cd "$(dirname "$0")/.." && pwd)
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(config set pose_json pose_csv ontology lighting library gltf glb obj marker camera_json png manifest
-  label_png imu_csv imu_yaml trajectory_file)
+  label_png imu_csv imu_yaml trajectory_file mesh_pack)
 failed=0
 for t in "${targets[@]}"; do
   exe="$build/tests/fuzz/silva_fuzz_$t"
