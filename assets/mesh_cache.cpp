@@ -66,9 +66,10 @@ bool is_build_folder(const fs::path& p) {
 void prune_builds(const fs::path& root, const fs::path& keep) {
   std::error_code ec;
   std::vector<std::pair<fs::file_time_type, fs::path>> builds;
-  for (const fs::directory_entry& e : fs::directory_iterator(root, ec))
-    if (e.is_directory(ec) && e.path() != keep && is_build_folder(e.path()))
-      builds.emplace_back(e.last_write_time(ec), e.path());
+  // Stepped with error codes: a folder another process removes meanwhile ends the listing, never throws.
+  for (fs::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_directory(ec) && it->path() != keep && is_build_folder(it->path()))
+      builds.emplace_back(it->last_write_time(ec), it->path());
   if (builds.size() <= kKeptBuilds) return;
   std::sort(builds.begin(), builds.end(), std::greater<>());
   for (size_t i = kKeptBuilds; i < builds.size(); ++i) fs::remove_all(builds[i].second, ec);
