@@ -23,6 +23,9 @@ struct Sprite {
   float half_length, half_width_at_middle, tilt, curl, keep;
   bool leaf, cone, taper;  ///< A leaf (midrib, curl); a cone (seams, round); narrowing to pointed ends.
   Vec3f colour;
+  float pitch = kLitterConePitch;             ///< A cone's seam spacing.
+  float shadow_width = kLitterShadowWidth;     ///< Width of its contact shadow,
+  float reach = kLitterReach;                  ///< and how far that and a filter reach past its outline.
 };
 
 /// The kinds' constants: leaf, blade, needle, twig, cone.
@@ -34,8 +37,8 @@ struct KindTable {
   const float* cone;
 };
 
-/// Distance (metres) from q pitches along to the nearest seam (a whole number of pitches).
-float seam_distance(float q) { return std::abs(q - std::floor(q + 0.5f)) * kLitterConePitch; }
+/// Distance (metres) from q pitches along to the nearest seam (a whole number of pitches `pitch` metres apart).
+float seam_distance(float q, float pitch) { return std::abs(q - std::floor(q + 0.5f)) * pitch; }
 
 /// The sprite of cell hashes h1, h2 over a floor of `m`.
 Sprite sprite_of(uint32_t h1, uint32_t h2, const LitterMix& m) {
@@ -75,7 +78,7 @@ Sprite sprite_of(uint32_t h1, uint32_t h2, const LitterMix& m) {
 /// Lays sprite `s` (cell hash h1), whose centre is (rx, ry) metres from the point, over `c` and `slope`.
 void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, float inv_f, float weight, Vec3f& c,
                 Vec2f& slope) {
-  const float reach_u = s.half_length + kLitterReach + half_f, reach_v = s.half_width_at_middle + kLitterReach + half_f;
+  const float reach_u = s.half_length + s.reach + half_f, reach_v = s.half_width_at_middle + s.reach + half_f;
   if (s.keep == 0.0f || rx * rx + ry * ry >= reach_u * reach_u + reach_v * reach_v) return;  // it does not reach here
   const float ax = byte_value(h1, 16) * 2.0f - 1.0f, ay = byte_value(h1, 24) * 2.0f - 1.0f;
   const float len = std::sqrt(ax * ax + ay * ay + 1e-8f);
@@ -85,14 +88,14 @@ void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, 
   const float half_width = s.taper ? s.half_width_at_middle * (1.0f - t * t) : s.half_width_at_middle;
   const float presence = s.keep * weight;
   const float cover = band_cover(v, half_width, half_f, inv_f) * band_cover(u, s.half_length, half_f, inv_f) * presence;
-  const float shadow = band_cover(v, half_width + kLitterShadowWidth, half_f, inv_f) *
-                       band_cover(u, s.half_length + kLitterShadowWidth, half_f, inv_f) * presence;
+  const float shadow = band_cover(v, half_width + s.shadow_width, half_f, inv_f) *
+                       band_cover(u, s.half_length + s.shadow_width, half_f, inv_f) * presence;
   const float rib =
       s.leaf ? band_cover(v, kLitterRibHalfWidth, half_f, inv_f) * band_cover(u, 0.9f * s.half_length, half_f, inv_f) : 0.0f;
   // A cone's scales: two sets of diagonal seams, the darker of them.
   const float seam =
-      s.cone ? std::max(band_cover(seam_distance((u + across) * (1.0f / kLitterConePitch)), kLitterConeSeamHalfWidth, half_f, inv_f),
-                        band_cover(seam_distance((u - across) * (1.0f / kLitterConePitch)), kLitterConeSeamHalfWidth, half_f, inv_f))
+      s.cone ? std::max(band_cover(seam_distance((u + across) * (1.0f / s.pitch), s.pitch), kLitterConeSeamHalfWidth, half_f, inv_f),
+                        band_cover(seam_distance((u - across) * (1.0f / s.pitch), s.pitch), kLitterConeSeamHalfWidth, half_f, inv_f))
              : 0.0f;
   for (int k = 0; k < 3; ++k) {
     const float under = c[k] * (1.0f - kLitterShadow * shadow);
@@ -104,6 +107,38 @@ void lay_sprite(const Sprite& s, uint32_t h1, float rx, float ry, float half_f, 
   slope = Vec2f(mix(slope.x(), ux * s.tilt - uy * side, cover), mix(slope.y(), uy * s.tilt + ux * side, cover));
 }
 
+/// The spruce cone of cell hashes h1, h2 where a cell holds one with probability kSpruceConeShare x density.
+Sprite spruce_cone_of(uint32_t h1, uint32_t h2, float density) {
+  const float size = byte_value(h2, 0), hue = byte_value(h2, 8), pick = byte_value(h2, 24);
+  Sprite s{};
+  s.cone = s.taper = true;
+  s.keep = pick < kSpruceConeShare * density ? 1.0f : 0.0f;
+  s.tilt = (byte_value(h1 ^ h2, 4) * 2.0f - 1.0f) * kLitterTilt;
+  s.half_length = kSpruceConeHalf[0] + kSpruceConeHalf[1] * size;
+  s.half_width_at_middle = kSpruceConeWidth * s.half_length;
+  for (int k = 0; k < 3; ++k) s.colour[k] = mix(kSpruceConeDark[k], kSpruceConeLight[k], hue);
+  s.pitch = kSpruceConePitch;
+  s.shadow_width = kSpruceConeShadowWidth;
+  s.reach = kSpruceConeReach;
+  return s;
+}
+
+/// Calls lay(h1, h2, rx, ry) for the cell of point (x, y) on a grid of `cell` metres and the eight around it
+/// (rows of cells upwards, each from the left): h1, h2 the cell's hashes (lattice z = z, z + 1 with `salt`),
+/// (rx, ry) the point's offset in metres from the sprite centre the cell's h1 places.
+template <class Lay>
+void each_cell_around(float x, float y, float cell, int32_t z, uint32_t salt, Lay lay) {
+  const float gx = x * (1.0f / cell), gy = y * (1.0f / cell);
+  const float fx = std::floor(gx), fy = std::floor(gy);
+  const int32_t ix = int32_t(fx), iy = int32_t(fy);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const uint32_t h1 = lattice_hash(ix + dx, iy + dy, z, salt);
+      const uint32_t h2 = lattice_hash(ix + dx, iy + dy, z + 1, salt);
+      lay(h1, h2, (gx - (fx + float(dx)) - byte_value(h1, 0)) * cell, (gy - (fy + float(dy)) - byte_value(h1, 8)) * cell);
+    }
+}
+
 }  // namespace
 
 float litter_fade(float footprint) {
@@ -111,22 +146,28 @@ float litter_fade(float footprint) {
   return 1.0f - smooth_weight(t);
 }
 
+float spruce_cone_fade(float footprint) {
+  const float t = std::clamp((footprint - kSpruceConeFadeNear) / (kSpruceConeFadeFar - kSpruceConeFadeNear), 0.0f, 1.0f);
+  return 1.0f - smooth_weight(t);
+}
+
 void litter_sprites(float x, float y, float footprint, const LitterMix& litter, float weight, Vec3f& c, Vec2f& slope) {
   if (!(weight > 0.0f)) return;
   const float f = std::clamp(footprint, 1e-4f, kLitterWidestFilter);
   const float half_f = 0.5f * f, inv_f = 1.0f / f;
-  const float gx = x * (1.0f / kLitterCell), gy = y * (1.0f / kLitterCell);
-  const float fx = std::floor(gx), fy = std::floor(gy);
-  const int32_t ix = int32_t(fx), iy = int32_t(fy);
   for (int layer = 0; layer < kLitterLayers; ++layer)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const uint32_t h1 = lattice_hash(ix + dx, iy + dy, 2 * layer, kGroundLitterSalt);
-        const uint32_t h2 = lattice_hash(ix + dx, iy + dy, 2 * layer + 1, kGroundLitterSalt);
-        const float rx = (gx - (fx + float(dx)) - byte_value(h1, 0)) * kLitterCell;
-        const float ry = (gy - (fy + float(dy)) - byte_value(h1, 8)) * kLitterCell;
-        lay_sprite(sprite_of(h1, h2, litter), h1, rx, ry, half_f, inv_f, weight, c, slope);
-      }
+    each_cell_around(x, y, kLitterCell, 2 * layer, kGroundLitterSalt, [&](uint32_t h1, uint32_t h2, float rx, float ry) {
+      lay_sprite(sprite_of(h1, h2, litter), h1, rx, ry, half_f, inv_f, weight, c, slope);
+    });
+}
+
+void spruce_cones(float x, float y, float footprint, float density, float weight, Vec3f& c, Vec2f& slope) {
+  if (!(weight > 0.0f) || !(density > 0.0f)) return;
+  const float f = std::clamp(footprint, 1e-4f, kSpruceConeWidestFilter);
+  const float half_f = 0.5f * f, inv_f = 1.0f / f;
+  each_cell_around(x, y, kSpruceConeCell, 0, kGroundConeSalt, [&](uint32_t h1, uint32_t h2, float rx, float ry) {
+    lay_sprite(spruce_cone_of(h1, h2, density), h1, rx, ry, half_f, inv_f, weight, c, slope);
+  });
 }
 
 }  // namespace silva::render

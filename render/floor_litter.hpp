@@ -74,6 +74,27 @@ inline constexpr float kLitterTwigLight[3] = {0.12f, 0.1f, 0.085f};
 inline constexpr float kLitterConeDark[3] = {0.05f, 0.03f, 0.018f};
 inline constexpr float kLitterConeLight[3] = {0.19f, 0.11f, 0.055f};
 
+/// Spruce cones (Picea abies: 10–16 cm long, 3–4 cm thick, hanging and fallen whole) lie on a grid of their
+/// own, at most one per cell, its centre inside the cell, so a point sees every cone that can reach it among
+/// its own cell and the eight around it (kSpruceConeCell exceeds a cone's reach with the widest filter).
+inline constexpr float kSpruceConeCell = 0.25f;
+/// Share of cells holding a cone where the litter is all spruce needles (about 5 cones per m²).
+inline constexpr float kSpruceConeShare = 0.3f;
+inline constexpr float kSpruceConeHalf[2] = {0.05f, 0.03f};  ///< Half length: cones 10 – 16 cm long,
+inline constexpr float kSpruceConeWidth = 0.3f;              ///< their half width / half length at the middle,
+inline constexpr float kSpruceConePitch = 0.011f;            ///< and the spacing of the seams between their scales.
+/// Footprints (metres per pixel) over which the cones fade out: a cone 5 … 2.5 pixels long.
+inline constexpr float kSpruceConeFadeNear = 0.026f;
+inline constexpr float kSpruceConeFadeFar = 0.052f;
+/// The widest antialiasing filter for cones (metres).
+inline constexpr float kSpruceConeWidestFilter = 0.052f;
+inline constexpr float kSpruceConeDark[3] = {0.055f, 0.03f, 0.016f};  ///< Weathered dark brown,
+inline constexpr float kSpruceConeLight[3] = {0.2f, 0.095f, 0.04f};    ///< freshly fallen red-brown.
+/// Width (metres) of the shadow around a cone, 3-4 cm thick where it lies, and how far its shadow and the
+/// widest filter can reach past its outline (as kLitterReach).
+inline constexpr float kSpruceConeShadowWidth = 0.012f;
+inline constexpr float kSpruceConeReach = kSpruceConeShadowWidth + 1e-4f;
+
 /// How much the sprites show where one pixel covers `footprint` metres: 1 up to kLitterFadeNear,
 /// 0 from kLitterFadeFar.
 float litter_fade(float footprint);
@@ -90,5 +111,14 @@ struct LitterMix {
 /// much litter lies here (0 on moss and bare soil; litter_fade included). Sprites lie over each other
 /// in the order (layer, cell y, cell x), so overlaps agree between neighbouring points.
 void litter_sprites(float x, float y, float footprint, const LitterMix& litter, float weight, Vec3f& c, Vec2f& slope);
+
+/// How much the spruce cones show where one pixel covers `footprint` metres: 1 up to kSpruceConeFadeNear,
+/// 0 from kSpruceConeFadeFar.
+float spruce_cone_fade(float footprint);
+
+/// Composites the spruce cones over `c` and `slope` at world point (x, y) as litter_sprites does its sprites:
+/// a cell holds a cone with probability kSpruceConeShare x `density` (the share of spruce needles in the
+/// litter), laid with `weight` (0 on moss and bare soil; spruce_cone_fade included), in the order (cell y, cell x).
+void spruce_cones(float x, float y, float footprint, float density, float weight, Vec3f& c, Vec2f& slope);
 
 }  // namespace silva::render

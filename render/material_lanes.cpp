@@ -88,6 +88,12 @@ void ground_lanes(VF px, VF py, VF nz, VF footprint, const FloorLook& floor, VF*
   const VF litter = hn::Mul(hn::Mul(sprites, hn::Sub(one, scaled(moss, 0.7f))), hn::Sub(one, soil));
   const VF blades = scaled(grass, 1.0f / 0.8f);  // a full grass cover (0.8) grows only blades
   litter_sprites_lanes(px, py, footprint, {blades, needles, fallen, litter}, c, sx, sy);
+  if (floor.spruce_cones > 0.0f) {
+    const VF cone_weight = hn::Mul(hn::Mul(hn::Sub(one, smoothstep_lanes(kSpruceConeFadeNear, kSpruceConeFadeFar, footprint)),
+                                           hn::Sub(one, scaled(moss, 0.7f))),
+                                   hn::Sub(one, soil));
+    spruce_cones_lanes(px, py, footprint, scaled(needles, floor.spruce_cones), cone_weight, c, sx, sy);
+  }
 }
 
 /// ground_albedo_row for one target.

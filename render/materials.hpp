@@ -18,6 +18,7 @@ struct FloorLook {
   /// Share of needles in the litter everywhere, 0 … 1 (a forest type of one kind of tree); negative:
   /// stands of needle and of leaf litter from noise (a mixed forest).
   float needle_share = -1.0f;
+  float spruce_cones = 0.0f;  ///< Share of the needle litter that falls from spruce and lays its cones, 0 … 1.
 };
 
 /// What a material function needs to know about one visible surface point.
@@ -91,6 +92,8 @@ inline constexpr float kGroundFallenYellow[3] = {0.25f, 0.14f, 0.03f};     ///< 
 ///         (1 + (0.8 value_noise2(23 p, leaf + 1) - 0.4) fine_detail)
 ///   then litter_sprites over out with LitterMix{grass / 0.8, needles, fallen} and weight
 ///   sprites (1 - 0.7 moss) (1 - soil): single leaves, needles, twigs and grass blades near the camera
+///   then, where floor.spruce_cones > 0, spruce_cones with density needles spruce_cones and weight
+///   spruce_cone_fade(footprint) (1 - 0.7 moss) (1 - soil)
 /// with shading_noise.hpp's noise evaluated lane by lane in its operation order (every target agrees).
 /// `slope` (may be null) receives the gradient (d/dx, d/dy, metres per metre) of the floor's relief
 ///   height = (kGroundLeafRelief leaf (1 - sprites) + kGroundSpeckleRelief speckle) fine_detail

@@ -18,6 +18,7 @@ enum NoiseSalt : uint32_t {
   kGroundFallenSalt = 0x1c0, ///< Drifts of freshly fallen autumn leaves (and + 8: their hue).
   kGroundLitterSalt = 0x1e0, ///< Single leaves, needles and twigs (render/floor_litter.hpp).
   kGroundCushionSalt = 0x200, ///< Moss cushions and their tips (and + 1).
+  kGroundConeSalt = 0x220,   ///< Spruce cones (render/floor_litter.hpp).
   // Trail (render/trail_material.cpp).
   kTrailSoil = 0x400,        ///< Compacted soil patches and grit.
   kTrailStone = 0x420,       ///< Embedded stones.

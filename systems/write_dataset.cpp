@@ -180,9 +180,10 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
   if (writer.progress) writer.progress(stats.frames_written, writer.total);
 }
 
-/// What lies on the world's forest floor: the season's fresh leaves and the forest type's litter.
+/// What lies on the world's forest floor: the season's fresh leaves and the forest type's litter and cones.
 render::FloorLook floor_look(const world::WorldContext& ctx) {
-  return {render::fallen_leaf_cover(config_season(ctx.config)), ctx.forest ? float(ctx.forest->needle_litter) : -1.0f};
+  return {render::fallen_leaf_cover(config_season(ctx.config)), ctx.forest ? float(ctx.forest->needle_litter) : -1.0f,
+          ctx.forest ? float(ctx.forest->spruce_litter) : 0.0f};
 }
 
 }  // namespace

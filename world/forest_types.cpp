@@ -9,12 +9,13 @@ namespace silva::world {
 
 const std::vector<ForestType>& forest_types() {
   static const std::vector<ForestType> types = {
-      {.name = "mixed", .conifers = {}, .broadleaves = {}, .shrubs = {}, .herbs = {}},
+      // Mixed: every species; spruce is one of its three conifers.
+      {.name = "mixed", .conifers = {}, .broadleaves = {}, .shrubs = {}, .herbs = {}, .spruce_litter = 1.0 / 3.0},
       // Even-aged Norway spruce: closed and dark, few shrubs, mostly bare needle litter with moss, ferns and
       // wood sorrel (no woodruff or nettle: acid needle litter).
       {.name = "spruce_plantation", .conifer_share = 1.0, .conifers = {"spruce"}, .broadleaves = {}, .shrubs = {},
        .herbs = {"fern", "wood_sorrel"}, .shrub_scale = 0.25,
-       .ground_share = 0.35, .fern_bias = 0.15, .needle_litter = 1.0},
+       .ground_share = 0.35, .fern_bias = 0.15, .needle_litter = 1.0, .spruce_litter = 1.0},
       // Beech hall forest: tall beech over a bare leaf-litter floor, a little hazel, ferns, wood sorrel and woodruff
       // (no nettle: it wants the light and nitrogen of open, rich ground).
       {.name = "beech_hall", .conifer_share = 0.0, .conifers = {}, .broadleaves = {"beech"}, .shrubs = {"hazel"},

@@ -22,6 +22,8 @@ struct ForestType {
   /// Share of needles in the floor's litter everywhere (render/materials.hpp FloorLook); negative:
   /// stands of needle and of leaf litter across the world.
   double needle_litter = -1.0;
+  /// Share of the needle litter that falls from spruce, which lays its cones among it (FloorLook::spruce_cones).
+  double spruce_litter = 0.0;
 };
 
 /// The named types, `mixed` (every species, the default) first, then `spruce_plantation`,

@@ -77,7 +77,8 @@ namespace {
 
 /// The ground formula of materials.hpp from the scalar noise functions and floor_litter.hpp's scalar
 /// sprites (test oracle); returns the albedo and sets `soil_weight`.
-Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil_weight, float needle_share = -1.0f) {
+Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil_weight, float needle_share = -1.0f,
+                    float spruce = 0.0f) {
   const auto smoothstep = [](float e0, float e1, float x) {
     return smooth_weight(std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f));
   };
@@ -115,6 +116,9 @@ Vec3f ground_oracle(const Vec3f& p, const Vec3f& n, float footprint, float& soil
   soil_weight = soil;
   Vec2f slope(0.0f, 0.0f);  // the sprites' tilt: not checked here
   litter_sprites(p.x(), p.y(), footprint, {grass * (1.0f / 0.8f), needles, 0.0f}, sprites * (1.0f - moss * 0.7f) * (1.0f - soil), c, slope);
+  if (spruce > 0.0f)
+    spruce_cones(p.x(), p.y(), footprint, needles * spruce, spruce_cone_fade(footprint) * (1.0f - moss * 0.7f) * (1.0f - soil), c,
+                 slope);
   return c;
 }
 
@@ -143,6 +147,11 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     n.emplace_back(0.0f, 0.0f, 1.0f);
     footprint.push_back(0.0005f);
   }
+  for (int i = 0; i < 512; ++i) {  // 2 m x 1 m 6.1 cm apart, footprints 0 .. 6 cm: spruce cones in full to faded
+    p.emplace_back(7.0f + 0.061f * float(i % 32), -1.0f + 0.061f * float(i / 32), 0.0f);
+    n.emplace_back(0.0f, 0.0f, 1.0f);
+    footprint.push_back(0.00012f * float(i % 500));
+  }
   const std::vector<int64_t> targets = test::highway_targets();
   ASSERT_GE(targets.size(), 2u);
   for (int64_t target : targets) {
@@ -152,14 +161,16 @@ TEST(ShadingMaterials, GroundRowsAreTheFormulaBitForBitOnEveryHighwayTarget) {
     std::vector<Vec3f> out(p.size());
     std::vector<float> soil(p.size());
     ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), out.data(), soil.data());
-    for (const float share : {0.0f, 0.85f, 1.0f}) {  // a forest type's litter everywhere
-      std::vector<Vec3f> typed(p.size());
-      ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), typed.data(), nullptr, nullptr, FloorLook{0.0f, share});
-      for (size_t i = 0; i < p.size(); ++i) {
-        float soil_weight = -1.0f;
-        EXPECT_EQ(typed[i], ground_oracle(p[i], n[i], footprint[i], soil_weight, share)) << share << " " << i;
+    for (const float share : {0.0f, 0.85f, 1.0f})  // a forest type's litter everywhere, with and without spruce cones
+      for (const float spruce : {0.0f, 0.5f, 1.0f}) {
+        std::vector<Vec3f> typed(p.size());
+        ground_albedo_row(p.data(), n.data(), footprint.data(), p.size(), typed.data(), nullptr, nullptr,
+                          FloorLook{0.0f, share, spruce});
+        for (size_t i = 0; i < p.size(); ++i) {
+          float soil_weight = -1.0f;
+          EXPECT_EQ(typed[i], ground_oracle(p[i], n[i], footprint[i], soil_weight, share, spruce)) << share << " " << i;
+        }
       }
-    }
     for (size_t i = 0; i < p.size(); ++i) {
       float soil_weight = -1.0f;
       EXPECT_EQ(out[i], ground_oracle(p[i], n[i], footprint[i], soil_weight)) << i;
