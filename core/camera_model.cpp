@@ -12,6 +12,7 @@ CameraModel camera_model(const CameraConfig& config, const Camera& camera) {
                           std::log2(config.f_number * config.f_number / config.shutter_s)};
   m.vignetting = config.vignetting;
   m.chromatic_aberration = config.chromatic_aberration;
+  m.bloom = config.bloom;
   m.jpeg_quality = config.jpeg_quality;
   if (config.depth_of_field)
     m.depth_of_field =

@@ -1,7 +1,7 @@
 #pragma once
 /// @file The camera/sensor model applied to RGB only (CONTRACT.md "Camera model"): shot + read
 /// sensor noise, vignetting, lateral chromatic aberration, thin-lens depth of field and motion
-/// blur. Plain data shared by the renderer (render/) and the camera file (io/).
+/// blur, sky glare. Plain data shared by the renderer (render/) and the camera file (io/).
 #include <optional>
 
 #include "core/camera.hpp"
@@ -46,6 +46,7 @@ struct CameraModel {
   std::optional<SensorNoise> noise;            ///< Sensor noise, or none.
   double vignetting = 0;                       ///< Strength of the cos^4 falloff, 0 = none, 1 = the full law.
   double chromatic_aberration = 0;             ///< Lateral CA: R sampled at radius (1 - k), B at (1 + k).
+  double bloom = 0;                            ///< Share of the sky's light spread over the glare halo (render/sky_glare.hpp).
   std::optional<DepthOfField> depth_of_field;  ///< Thin-lens blur, or a pinhole.
   std::optional<ExposureMotion> motion;        ///< Camera motion during the exposure, or a still camera.
   double chroma = 1;                           ///< Share of each pixel's colour kept (1 = all; exposed_camera_model).

@@ -68,6 +68,7 @@ struct CameraConfig {
   double max_gain = 32;           ///< camera.max_gain (the auto gain's ceiling in dark scenes)
   double vignetting = 0.25;       ///< camera.vignetting (strength of the cos^4 falloff)
   double chromatic_aberration = 0;  ///< camera.chromatic_aberration (lateral, fraction of the radius)
+  double bloom = 0.03;            ///< camera.bloom (share of the sky's light the lens spreads into a halo)
   int jpeg_quality = 0;           ///< camera.jpeg_quality (0 = the RGB is not JPEG-compressed)
   bool depth_of_field = false;    ///< camera.depth_of_field: thin-lens blur
   double f_number = 2;            ///< camera.f_number (aperture)

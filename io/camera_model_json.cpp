@@ -39,6 +39,7 @@ nlohmann::ordered_json camera_model_json(const CameraModel& model) {
                   {"max_gain", n->max_gain}};
   j["vignetting"] = model.vignetting;
   j["chromatic_aberration"] = model.chromatic_aberration;
+  j["bloom"] = model.bloom;
   j["chroma"] = model.chroma;
   j["jpeg_quality"] = model.jpeg_quality;
   j["depth_of_field"] = nullptr;
@@ -64,6 +65,7 @@ CameraModel parse_camera_model(const nlohmann::json& obj, const std::string& whe
   }
   m.vignetting = json_number(j, "vignetting", where);
   m.chromatic_aberration = json_number(j, "chromatic_aberration", where);
+  if (j.contains("bloom")) m.bloom = json_number(j, "bloom", where);
   if (j.contains("chroma")) m.chroma = json_number(j, "chroma", where);
   if (j.contains("jpeg_quality")) m.jpeg_quality = int(json_number(j, "jpeg_quality", where));
   if (const nlohmann::json* d = optional_object(j, "depth_of_field", where))

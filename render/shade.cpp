@@ -23,6 +23,7 @@
 #include "render/shade_ao.hpp"
 #include "render/shadow_lookup.hpp"
 #include "render/sky.hpp"
+#include "render/sky_glare.hpp"
 #include "render/sky_fog.hpp"
 #include "render/surface_light.hpp"
 #include "render/view_directions.hpp"
@@ -277,6 +278,16 @@ struct RowWorker {
   std::optional<MaskBlendRows> blend;  ///< The coverage blend, when the frame has minified masks.
 };
 
+/// Share of the sky light the canopy takes at the camera (0 without a canopy map).
+float canopy_at_camera(const ShadeInputs& in) {
+  float share = 0.0f;
+  if (in.canopy) {
+    const Vec3f eye = in.camera.position().cast<float>();
+    canopy_share_row(*in.canopy, &eye, 1, &share);
+  }
+  return share;
+}
+
 }  // namespace
 
 ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
@@ -296,12 +307,8 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   float exposure = exposure_multiplier(ev100);
   const uint64_t key = noise_key(in.sequence, in.frame);
   CameraModel exposed_model = exposed_camera_model(in.model, ev100);
-  float canopy_at_camera = 0.0f;
-  if (in.canopy) {
-    const Vec3f eye = in.camera.position().cast<float>();
-    canopy_share_row(*in.canopy, &eye, 1, &canopy_at_camera);
-  }
-  const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera);
+  const WeatherOverlay overlay(lit.weather, sky, in.seed, key, g.height, canopy_at_camera(in));
+  const SkyGlare glare(g, in.camera, sky, float(in.model.bloom));
   ShadeScratch own;  // this call's buffers when the caller keeps none
   ShadeScratch& scratch = in.scratch ? *in.scratch : own;
   const HalfResAo half_ao(g, in.camera, scratch.ao);
@@ -322,11 +329,12 @@ ShadeCounts shade_rgb(const ShadeInputs& in, std::vector<uint8_t>& rgb_out) {
   const auto shaded_row = [&](RowWorker& w, int v) {
     return whole ? &frame.rgb[size_t(v) * size_t(g.width)] : w.row.data();
   };
-  const auto finish = [&](RowWorker& w, int v) {  // blend, weather overlay, then encode or keep for the frame
+  const auto finish = [&](RowWorker& w, int v) {  // blend, weather overlay, glare, then encode or keep for the frame
     const size_t row = size_t(v) * size_t(g.width);
     Vec3f* radiance = soften ? w.row.data() : shaded_row(w, v);
     if (soften) w.blend->blend(v, radiance);
     if (overlay.active()) overlay.apply_row(v, radiance, g.width);
+    if (glare.active()) glare.apply_row(v, radiance);
     if (!deferred) w.encoder->encode(v, radiance->data(), &rgb_out[row * 3]);
     else if (soften) std::copy(radiance, radiance + g.width, &finished.rgb[row]);
   };

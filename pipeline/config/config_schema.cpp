@@ -147,6 +147,10 @@ std::vector<ConfigKey> build_schema() {
       {"camera.chromatic_aberration", T::Float,
        "lateral chromatic aberration: red sampled at radius x (1 - k), blue at (1 + k); 0 = none", between(0, 0.003),
        {}, [](Config& c) -> FieldRef { return &c.camera.chromatic_aberration; }},
+      {"camera.bloom", T::Float,
+       "share of the sky's light the lens spreads over a halo 4-64 px wide (veiling glare: bright sky glows into "
+       "the leaf edges around it); 0 = none",
+       between(0, 0.1), {}, [](Config& c) -> FieldRef { return &c.camera.bloom; }},
       {"camera.jpeg_quality", T::Int,
        "JPEG quality the RGB is compressed with and decoded again before it is written (a compressed camera stream); "
        "0 = none",

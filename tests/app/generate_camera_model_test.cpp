@@ -34,7 +34,7 @@ std::map<std::string, std::string> under(const std::map<std::string, std::string
 
 TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
   const fs::path dir = fresh_test_dir();
-  const std::vector<std::string> off = {"camera.noise=false", "camera.vignetting=0"};
+  const std::vector<std::string> off = {"camera.noise=false", "camera.vignetting=0", "camera.bloom=0"};
   const auto plain = run_with(dir, "plain", off);
   const std::vector<std::string> labels = {"/semantic/", "/semantic_color/", "/instance/", "/depth/", "/depth_exr/",
                                            "/normal/", "/depth_preview/"};
@@ -43,6 +43,7 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
       {"noise", {"camera.noise=true", "camera.gain=8"}},
       {"vignetting", {"camera.vignetting=1"}},
       {"chromatic_aberration", {"camera.chromatic_aberration=0.003"}},
+      {"bloom", {"camera.bloom=0.1"}},
       {"jpeg", {"camera.jpeg_quality=40"}},
       {"depth_of_field",
        {"camera.depth_of_field=true", "camera.f_number=0.5", "camera.sensor_width_mm=100", "camera.focus_distance=1"}},
@@ -67,6 +68,7 @@ TEST(GenerateCameraModel, EachEffectChangesOnlyTheRgb) {
     EXPECT_EQ(camera["motion_blur"].is_null(), name != "motion_blur");
     EXPECT_EQ(camera["vignetting"], name == "vignetting" ? 1.0 : 0.0);
     EXPECT_EQ(camera["chromatic_aberration"], name == "chromatic_aberration" ? 0.003 : 0.0);
+    EXPECT_EQ(camera["bloom"], name == "bloom" ? 0.1 : 0.0);
     EXPECT_EQ(camera["chroma"], 1.0);  // a day frame is exposed at the base gain
     EXPECT_EQ(camera["jpeg_quality"], name == "jpeg" ? 40 : 0);
     const auto random_camera = nlohmann::json::parse(files.at("random/camera/000000.json"))["camera_model"];

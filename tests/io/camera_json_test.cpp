@@ -24,6 +24,7 @@ CameraRecord sample(bool with_trail) {
   r.model.vignetting = 0.25;
   if (with_trail) {  // every optic on, with values that need all 17 digits
     r.model.chromatic_aberration = 0.0031;
+    r.model.bloom = 0.0123;
     r.model.depth_of_field = DepthOfField{2.8, 3.3, 5.65 / 3.0};
     r.model.motion = ExposureMotion{1.0 / 60.0, pose_from_angles(Vec3d(10.09, -3.7, 1.5), 33.2, -12.25, 0.1),
                                     pose_from_angles(Vec3d(10.11, -3.7, 1.5), 33.4, -12.25, 0.1)};
@@ -78,8 +79,8 @@ TEST(CameraJson, HasContractKeysInOrder) {
   std::vector<std::string> model_keys;
   for (const auto& [k, v] : model.items()) model_keys.push_back(k);
   EXPECT_EQ(model_keys,
-            (std::vector<std::string>{"noise", "vignetting", "chromatic_aberration", "chroma", "jpeg_quality",
-                                      "depth_of_field", "motion_blur"}));
+            (std::vector<std::string>{"noise", "vignetting", "chromatic_aberration", "bloom", "chroma",
+                                      "jpeg_quality", "depth_of_field", "motion_blur"}));
   EXPECT_EQ(model["noise"]["full_well_e"], 10000.0);
   EXPECT_EQ(model["noise"]["read_noise_e"], 3.0);
   EXPECT_EQ(model["noise"]["gain"], 2.5);

@@ -29,6 +29,8 @@ TEST(ConfigCameraModel, OutOfRangeValuesNameKeyAndRange) {
   EXPECT_EQ(load_message({"camera.chromatic_aberration=0.1"}),
             "--set camera.chromatic_aberration=0.1: camera.chromatic_aberration = 0.1 is out of range (allowed: 0 "
             "to 0.003)");
+  EXPECT_EQ(load_message({"camera.bloom=0.2"}),
+            "--set camera.bloom=0.2: camera.bloom = 0.2 is out of range (allowed: 0 to 0.1)");
   EXPECT_EQ(load_message({"camera.f_number=0.2"}),
             "--set camera.f_number=0.2: camera.f_number = 0.2 is out of range (allowed: 0.5 to 64)");
   EXPECT_EQ(load_message({"camera.shutter_s=0"}),

@@ -16,7 +16,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "captures.autopilot_yaws", "captures.aerial", "captures.poses_file", "camera.fov_deg",
         "camera.near", "camera.far", "camera.ground_height", "camera.aerial_height",
         "camera.aerial_pitch_deg", "camera.antialias", "camera.noise", "camera.full_well_e",
-        "camera.read_noise_e", "camera.gain", "camera.vignetting", "camera.chromatic_aberration",
+        "camera.read_noise_e", "camera.gain", "camera.vignetting", "camera.chromatic_aberration", "camera.bloom",
         "camera.depth_of_field", "camera.f_number", "camera.focus_distance", "camera.sensor_width_mm",
         "camera.motion_blur", "camera.shutter_s", "camera.autopilot_speed", "vegetation.density",
         "vegetation.grid_spacing", "vegetation.ground", "vegetation.season", "vegetation.forest_type", "terrain.max_elevation", "terrain.octaves",
@@ -34,7 +34,7 @@ TEST(ConfigSchema, HasEveryContractKeyOnce) {
         "trajectory.sway_deg", "trajectory.step_hz", "trajectory.imu_noise", "trajectory.flow"}) {
     EXPECT_NE(find_key(name), nullptr) << name;
   }
-  EXPECT_EQ(names.size(), 91u);
+  EXPECT_EQ(names.size(), 92u);
   EXPECT_EQ(find_key("threads"), nullptr);  // CLI only (CONTRACT.md)
 }
 
