@@ -42,6 +42,12 @@ class SkyGlare {
   float strength_;
   bool active_ = false;
   LinearFrame halo_;  ///< The blurred sky light per block (pixel units of the block grid).
+  /// The two halo columns a pixel column lies between and the right one's weight.
+  struct Column {
+    int left, right;
+    float weight;
+  };
+  std::vector<Column> columns_;  ///< Per pixel column.
 };
 
 }  // namespace silva::render
