@@ -21,10 +21,11 @@ STANDS = [  # label, settings
 TILE_W, TILE_H = 480, 270
 LABEL_W = 100
 FRAME = 4  # autopilot point 1 at yaw 0 (along the trail)
+FLOOR_FRAME = 1  # autopilot point 0 at yaw 0: the floor sheet's view (sunlit floor near the camera in each stand)
 
 
-def render(silva, out, seed, settings):
-    """Autopilot view FRAME of `seed` with `settings` at 4x tile size (1920x1080), as a BGR image."""
+def render(silva, out, seed, settings, frame=FRAME):
+    """Autopilot view `frame` of `seed` with `settings` at 4x tile size (1920x1080), as a BGR image."""
     command = [str(silva), "generate", "--seed", str(seed), "--quiet", "--overwrite", "--out", str(out),
                "--set", "trail.surface=packed_earth", "--set", 'captures.sequences=["autopilot"]',
                "--set", "captures.autopilot_points=3", "--set", "captures.autopilot_yaws=[-45.0, 0.0, 45.0]",
@@ -32,7 +33,7 @@ def render(silva, out, seed, settings):
     for setting in settings:
         command += ["--set", setting]
     subprocess.run(command, check=True)
-    return cv2.imread(str(out / f"{seed:010d}" / "autopilot" / "rgb" / f"{FRAME:06d}.png"))
+    return cv2.imread(str(out / f"{seed:010d}" / "autopilot" / "rgb" / f"{frame:06d}.png"))
 
 
 def floor_window(view):
@@ -53,23 +54,24 @@ def floor_crop(view, x):
     return view[h - TILE_H:h, x:x + TILE_W]
 
 
-def stand_rows(args, stands, pick):
-    """One labelled row per (label, settings) of `stands`: the whole view at a quarter, then the --before build's
-    crop (when given) and this build's, where pick(view) returns the crop function for this build's view."""
+def stand_rows(args, stands, pick, frame=FRAME):
+    """One labelled row per (label, settings) of `stands`: the whole view `frame` at a quarter, then the --before
+    build's crop (when given) and this build's, where pick(view) returns the crop function for this build's view."""
     rows = []
     for k, (label, settings) in enumerate(stands):
-        view = render(args.silva, args.scratch / f"new{k}", args.seed, settings)
+        view = render(args.silva, args.scratch / f"new{k}", args.seed, settings, frame)
         crop = pick(view)
         tiles = [cv2.resize(view, (TILE_W, TILE_H), interpolation=cv2.INTER_AREA), crop(view)]
         if args.before:
-            tiles.insert(1, crop(render(args.before, args.scratch / f"old{k}", args.seed, settings)))
+            tiles.insert(1, crop(render(args.before, args.scratch / f"old{k}", args.seed, settings, frame)))
         rows.append(labelled_row(label, tiles, LABEL_W))
     return rows
 
 
 def main():
     args = sheet_args(__doc__, "/tmp/silva-floor", "docs/realism-floor.jpg", before=True)
-    write_sheet(stand_rows(args, STANDS, lambda view: (lambda image, x=floor_window(view): floor_crop(image, x))), args.out)
+    write_sheet(stand_rows(args, STANDS, lambda view: (lambda image, x=floor_window(view): floor_crop(image, x)), FLOOR_FRAME),
+                args.out)
 
 
 if __name__ == "__main__":
