@@ -236,9 +236,8 @@ inline void spruce_cones_lanes(VF x, VF y, VF footprint, VF density, VF weight, 
   SpriteCanvas canvas(c, sx, sy, footprint, kSpruceConeWidestFilter);
   const LayerLook look{kSpruceConePitch, kSpruceConeDark, kSpruceConeLight, kSpruceConeShadowWidth, kSpruceConeReach};
   each_cell_around_lanes(x, y, kSpruceConeCell, 0u, kGroundConeSalt, [&](VU h1, VU h2, VF rx, VF ry) {
-    const SpriteLanes s = spruce_cone_lanes(h1, h2, density);
-    if (hn::AllFalse(d, hn::Gt(s.keep, hn::Zero(d)))) return;  // most cells hold no cone
-    lay_sprite_lanes(s, h1, rx, ry, canvas.frame, weight, look, canvas.c, canvas.sx, canvas.sy);
+    lay_sprite_lanes(spruce_cone_lanes(h1, h2, density), h1, rx, ry, canvas.frame, weight, look, canvas.c, canvas.sx,
+                     canvas.sy);
   });
   canvas.keep(drawn, c, sx, sy);
 }

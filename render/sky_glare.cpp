@@ -81,8 +81,9 @@ LinearFrame coarse_blur(const LinearFrame& src, int factor) {
 }  // namespace
 
 SkyGlare::SkyGlare(const GBuffer& g, const Camera& camera, const Sky& sky, float strength) : g_(g), strength_(strength) {
-  if (!(strength > 0.0f) || std::none_of(g.depth.begin(), g.depth.end(), [](float d) { return d == 0.0f; })) return;
+  if (!(strength > 0.0f)) return;
   const LinearFrame source = sky_source(g, camera, sky);
+  if (std::all_of(source.rgb.begin(), source.rgb.end(), [](const Vec3f& c) { return c.isZero(); })) return;  // no sky
   halo_.resize(source.width, source.height);
   std::fill(halo_.rgb.begin(), halo_.rgb.end(), Vec3f::Zero());
   for (int level = 0; level < kGlareLevels; ++level) {
