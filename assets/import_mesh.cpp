@@ -20,12 +20,20 @@
 
 #include "assets/gltf_triangles.hpp"
 #include "core/error.hpp"
+#include "core/imgcodecs_symbols.hpp"
 #include "core/input_limits.hpp"
 #include "core/png_check.hpp"
+#include "core/shared_library.hpp"
 
 namespace silva::assets {
 
 namespace {
+
+/// cv::imdecode of encoded texture bytes, from imgcodecs opened at the first texture (core/imgcodecs_symbols.hpp).
+cv::Mat decode_texture(const cv::Mat& bytes) {
+  static auto* const decode = shared_library_function<cv::Mat(const cv::_InputArray&, int)>(kImgcodecsLibrary, kImdecodeSymbol);
+  return decode(bytes, cv::IMREAD_UNCHANGED);
+}
 
 /// The material surfaces of a role use when the file's material name is not a core material.
 Material default_material(Role role) {
@@ -249,7 +257,7 @@ class AssetImporter {
       if (t->mHeight == 0) {
         check_if_png(ref, {reinterpret_cast<const uint8_t*>(t->pcData), t->mWidth});
         const cv::Mat bytes(1, int(t->mWidth), CV_8U, t->pcData);
-        image = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+        image = decode_texture(bytes);
       } else {
         check_texture_size(ref, t->mWidth, t->mHeight);
         image.create(int(t->mHeight), int(t->mWidth), CV_8UC4);  // aiTexel is BGRA
@@ -261,7 +269,7 @@ class AssetImporter {
       if (!std::filesystem::is_regular_file(path, ec)) fail("texture '" + ref + "' cannot be decoded: no such file next to the asset");
       std::string bytes = limits::read_input_file(path, "texture");
       check_if_png(ref, {reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()});
-      image = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()), cv::IMREAD_UNCHANGED);
+      image = decode_texture(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()));
     }
     if (image.empty()) fail("texture '" + ref + "' cannot be decoded");
     check_texture_size(ref, unsigned(image.cols), unsigned(image.rows));

@@ -16,6 +16,7 @@
 #include "core/png_check.hpp"
 #include "io/atomic_file.hpp"
 #include "io/capture_set.hpp"
+#include "io/image_codecs.hpp"
 #include "io/json_read.hpp"
 #include "io/lidar_files.hpp"
 #include "io/ontology_file.hpp"
@@ -130,9 +131,9 @@ cv::Mat read_image(const fs::path& path, int type, const cv::Mat& like) {
   if (path.extension() == ".png") {  // checked first: libpng prints its own error line on corrupt data
     std::string bytes = limits::read_input_file(path, "image");
     check_png({reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()}, path.string());
-    image = cv::imdecode(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()), cv::IMREAD_UNCHANGED);
+    image = decode_image(cv::Mat(1, int(bytes.size()), CV_8U, bytes.data()), cv::IMREAD_UNCHANGED);
   } else {
-    image = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+    image = read_image_file(path.string(), cv::IMREAD_UNCHANGED);
   }
   if (image.empty()) throw InputError(path.string() + ": not a readable image");
   if (image.type() != type)

@@ -8,6 +8,7 @@
 #include "core/input_limits.hpp"
 #include "core/png_check.hpp"
 #include "io/atomic_file.hpp"
+#include "io/image_codecs.hpp"
 
 namespace silva::io {
 
@@ -50,7 +51,7 @@ std::string place_coco_image(const Dataset& dataset, const DatasetFrame& f, cons
   }
   const cv::Mat rgb = dataset.image(f, "rgb", CV_8UC3);
   std::vector<uint8_t> jpeg;
-  if (!cv::imencode(".jpg", rgb, jpeg, {cv::IMWRITE_JPEG_QUALITY, ExportOptions::kJpegQuality}))
+  if (!encode_image(".jpg", rgb, jpeg, {cv::IMWRITE_JPEG_QUALITY, ExportOptions::kJpegQuality}))
     throw IoError("cannot encode " + source.string() + " as JPEG");
   write_file_atomic(images / (f.stem() + ".jpg"), jpeg);
   return f.stem() + ".jpg";

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/image_codecs.hpp"
 
 namespace silva::io {
 
@@ -142,7 +143,7 @@ class MaterialTable {
       for (int x = 0; x < mask.width; ++x)
         rgba.at<cv::Vec4b>(y, x)[3] = mask.alpha[size_t(y) * size_t(mask.width) + size_t(x)];
     std::vector<uint8_t> png;
-    cv::imencode(".png", rgba, png, {cv::IMWRITE_PNG_COMPRESSION, 6});
+    encode_image(".png", rgba, png, {cv::IMWRITE_PNG_COMPRESSION, 6});
     const int view = bin_.add_view(png.data(), png.size(), 0);
     masks_.push_back(&mask);
     images_.push_back({{"bufferView", view}, {"mimeType", "image/png"}});

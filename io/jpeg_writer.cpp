@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "io/image_codecs.hpp"
+
 namespace silva::io {
 
 std::vector<uint8_t> encode_jpeg_rgb8(std::span<const uint8_t> rgb, int width, int height, int quality) {
@@ -14,14 +16,14 @@ std::vector<uint8_t> encode_jpeg_rgb8(std::span<const uint8_t> rgb, int width, i
   cv::Mat bgr;
   cv::cvtColor(view, bgr, cv::COLOR_RGB2BGR);
   std::vector<uint8_t> jpeg;
-  if (!cv::imencode(".jpg", bgr, jpeg, {cv::IMWRITE_JPEG_QUALITY, quality}))
+  if (!encode_image(".jpg", bgr, jpeg, {cv::IMWRITE_JPEG_QUALITY, quality}))
     throw std::runtime_error("encode_jpeg_rgb8: OpenCV could not encode the image");
   return jpeg;
 }
 
 std::vector<uint8_t> jpeg_round_trip(std::span<const uint8_t> rgb, int width, int height, int quality) {
   const std::vector<uint8_t> jpeg = encode_jpeg_rgb8(rgb, width, height, quality);
-  const cv::Mat bgr = cv::imdecode(jpeg, cv::IMREAD_COLOR);
+  const cv::Mat bgr = decode_image(jpeg, cv::IMREAD_COLOR);
   if (bgr.rows != height || bgr.cols != width) throw std::runtime_error("jpeg_round_trip: OpenCV could not decode its JPEG");
   cv::Mat out_rgb;
   cv::cvtColor(bgr, out_rgb, cv::COLOR_BGR2RGB);
