@@ -139,10 +139,6 @@ bool plain_foliage_base(Material m, Vec3f& base) {
   }
 }
 
-float leaf_brightness(uint8_t alpha) {
-  return alpha >= 128 && alpha < 255 ? 0.75f + 0.5f * float(alpha - 128) / 126.0f : 1.0f;
-}
-
 Vec3f foliage_albedo(const Vec3f& base, uint32_t variation, float mottle, float leaf_shade) {
   return base.cwiseProduct(variation_tint(variation)) * (0.8f + 0.4f * mottle) * leaf_shade;
 }

@@ -36,7 +36,10 @@ struct SurfacePoint {
 
 /// Brightness of one leaf of a foliage mask against its tree's from the alpha of its texel:
 /// 0.75 … 1.25 for alpha 128 … 254 (a leaf's own value), 1 for anything else (255: no per-leaf value).
-float leaf_brightness(uint8_t alpha);
+/// Inline: the shading asks it of most pixels of every frame.
+inline float leaf_brightness(uint8_t alpha) {
+  return alpha >= 128 && alpha < 255 ? 0.75f + 0.5f * float(alpha - 128) / 126.0f : 1.0f;
+}
 
 /// Linear-RGB diffuse albedo of a surface point: a pure function of the point (no state).
 Vec3f material_albedo(const SurfacePoint& s);

@@ -26,6 +26,7 @@
 #include "render/sky_glare.hpp"
 #include "render/sky_fog.hpp"
 #include "render/surface_light.hpp"
+#include "render/trail_material.hpp"
 #include "render/view_directions.hpp"
 #include "render/weather_look.hpp"
 #include "render/weather_overlay.hpp"
@@ -100,7 +101,8 @@ struct RowTerms {
   std::vector<float> canopy;        ///< Share of the sky light the canopy takes per pixel (0 without a map).
   std::vector<Vec3f> ground;        ///< Ground albedo per pixel (only procedural Ground pixels set).
   std::vector<Vec2f> ground_slope;  ///< Ground relief gradient per pixel (the same pixels).
-  std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground.
+  std::vector<Vec3f> trail_floor;   ///< Forest-floor albedo under each procedural Trail pixel (only those set).
+  std::vector<uint32_t> ground_at;  ///< Pixels of the row with procedural Ground or Trail (the trail's floor).
   std::vector<Vec3f> gather_p, gather_n, gather_out;  ///< Compacted ground inputs and results.
   std::vector<float> gather_footprint, gather_soil;  ///< Metres per pixel there; bare-soil weights.
   std::vector<Vec2f> gather_slope;  ///< Compacted relief gradients.
@@ -122,7 +124,7 @@ struct RowTerms {
   explicit RowTerms(int width)
       : fog_amount(size_t(width)), ao(size_t(width)), sun_visible(size_t(width), 1.0f), canopy(size_t(width), 0.0f),
         ground(size_t(width)),
-        ground_slope(size_t(width)), view_dir(size_t(width)), foliage(size_t(width)) {}
+        ground_slope(size_t(width)), trail_floor(size_t(width)), view_dir(size_t(width)), foliage(size_t(width)) {}
 
   /// Evaluates the terms of row v.
   void evaluate(const ShadeInputs& in, const Sky& sky, const HeightFog& fog, const HalfResAo& half_ao, int v) {
@@ -146,7 +148,7 @@ struct RowTerms {
     Vec3f base;
     for (size_t u = 0; u < w; ++u) {
       if (g.depth[row + u] == 0.0f || g.base_color[row + u] != 0) continue;
-      if (g.material[row + u] == Material::Ground) {
+      if (g.material[row + u] == Material::Ground || g.material[row + u] == Material::Trail) {
         ground_at.push_back(uint32_t(u));
         gather_p.push_back(g.position[row + u]);
         gather_n.push_back(g.normal[row + u]);
@@ -169,6 +171,10 @@ struct RowTerms {
     ground_albedo_row(gather_p.data(), gather_n.data(), gather_footprint.data(), ground_at.size(), gather_out.data(),
                       gather_soil.data(), gather_slope.data(), in.floor);
     for (size_t k = 0; k < ground_at.size(); ++k) {
+      if (g.material[row + ground_at[k]] == Material::Trail) {
+        trail_floor[ground_at[k]] = gather_out[k];
+        continue;
+      }
       ground[ground_at[k]] = gather_out[k];
       ground_slope[ground_at[k]] = gather_slope[k];
       bare_soil += gather_soil[k] >= 0.5f ? 1 : 0;
@@ -185,12 +191,14 @@ SurfaceSample surface_sample(const ShadeInputs& in, const WeatherLook& look, con
   const SurfacePoint s{g.position[i], g.normal[i], g.uv[i], g.material[i], g.variation[i], in.floor,
                        leaf_brightness(g.leaf[i]), in.trail_surface, g.depth[i] * row.metres_per_depth};
   const bool procedural_ground = g.base_color[i] == 0 && s.material == Material::Ground;
+  const bool procedural_trail = g.base_color[i] == 0 && s.material == Material::Trail;
   Vec3f base;
   // A species bark's colour and fissure relief come from one lookup of its plate.
   const bool bark = is_species_bark(s.material);
   const SpeciesBark species = bark ? species_bark(s) : SpeciesBark{Vec3f::Zero(), Vec3f::Zero()};
   Vec3f albedo = g.base_color[i] != 0                  ? unpack_srgb8(g.base_color[i])
                  : procedural_ground                   ? row.ground[size_t(u)]
+                 : procedural_trail                    ? trail_albedo_on(s, row.trail_floor[size_t(u)])
                  : bark                                ? species.albedo
                  : plain_foliage_base(s.material, base) ? row.foliage[size_t(u)]
                                                        : material_albedo(s);

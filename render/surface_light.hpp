@@ -84,6 +84,7 @@ class SurfaceBatch {
     kAlbedoR, kAlbedoG, kAlbedoB, kNormalX, kNormalY, kNormalZ, kCardX, kCardY, kCardZ,
     kViewX, kViewY, kViewZ, kRoughness, kF0, kTranslucency, kAo, kSunVisible, kFog, kCanopy, kFieldCount
   };
+  static_assert(kFieldCount == 19, "push's unroll pragma names the field count");
   /// Samples per padding unit: the float lanes of the widest SIMD vector (AVX-512).
   static constexpr size_t kPadding = 16;
   /// Empties the batch and makes room for up to `capacity` samples (memory is kept across calls).
@@ -95,6 +96,7 @@ class SurfaceBatch {
                                        s.card_normal.z(), s.view_dir.x(),    s.view_dir.y(),    s.view_dir.z(),
                                        s.roughness,       s.f0,              s.translucency,    s.ao,
                                        s.sun_visible,     s.fog,             s.canopy};
+#pragma GCC unroll 19  // kFieldCount: one store per field, no loop (this runs for most pixels of a frame)
     for (size_t f = 0; f < kFieldCount; ++f) data_[f][size_] = values[f];
     ++size_;
   }

@@ -198,6 +198,10 @@ Vec3f worn_floor(const Vec3f& p, const Vec3f& floor, float edge) {
 Vec3f trail_albedo(const SurfacePoint& s) {
   Vec3f floor;
   ground_albedo_row(&s.position, &s.normal, &s.footprint, 1, &floor, nullptr, nullptr, s.floor);
+  return trail_albedo_on(s, floor);
+}
+
+Vec3f trail_albedo_on(const SurfacePoint& s, const Vec3f& floor) {
   const float edge = overlay_edge(s.uv.x(), s.position);
   const float w = overlay_weight(edge);
   const Vec3f outside = worn_floor(s.position, floor, edge);

@@ -18,6 +18,10 @@ inline constexpr float kMudWetness = 0.3f;
 /// overlay_weight, so it is exactly half of each on the label edge and the floor at kOverlayMargin.
 Vec3f trail_albedo(const SurfacePoint& s);
 
+/// trail_albedo over `floor`, the forest floor's albedo under the point (ground_albedo_row of its position,
+/// normal and footprint), for callers that evaluate the floor of many points at once.
+Vec3f trail_albedo_on(const SurfacePoint& s, const Vec3f& floor);
+
 /// Water standing in a muddy trail's ruts at `s`, 0 … 1, in any weather (elongated pools along the
 /// ruts, about a third of their length); 0 for every other family and off the trail band.
 float trail_standing_water(const SurfacePoint& s);

@@ -49,19 +49,9 @@ void SunCache::keep(SunKey key, std::shared_ptr<const SunMaps> maps) {
 }
 
 std::shared_ptr<FrameWork> FrameSlots::take() {
-  std::unique_ptr<FrameWork> w;
-  {
-    const std::lock_guard lock(pool_->mutex);
-    if (!pool_->free.empty()) {
-      w = std::move(pool_->free.back());
-      pool_->free.pop_back();
-    }
-  }
-  if (!w) w = std::make_unique<FrameWork>();
-  return std::shared_ptr<FrameWork>(w.release(), [pool = pool_](FrameWork* p) {
-    const std::lock_guard lock(pool->mutex);
-    pool->free.emplace_back(p);
-  });
+  std::shared_ptr<FrameWork> w = slots_.take();
+  w->shade_scratches = shade_scratches_;
+  return w;
 }
 
 namespace {
@@ -82,6 +72,7 @@ void render_right(const render::Scene& scene, const render::RenderOptions& optio
                   render::Renderer& renderer, FrameWork& work) {
   if (!work.right) work.right = std::make_unique<FrameWork>();
   FrameWork& right = *work.right;
+  right.shade_scratches = work.shade_scratches;
   right.frame = world::stereo_right(work.frame, baseline_m);
   right.lighting = work.lighting;
   right.files.clear();

@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <vector>
@@ -21,6 +20,7 @@
 #include "render/gbuffer.hpp"
 #include "render/frame_lighting.hpp"
 #include "core/aabb.hpp"
+#include "core/recycling_pool.hpp"
 #include "render/canopy_map.hpp"
 #include "render/renderer.hpp"
 #include "render/shade.hpp"
@@ -87,7 +87,9 @@ struct FrameWork {
   render::GBuffer gbuffer;           ///< Labels, depth, normals.
   std::vector<uint8_t> rgb;          ///< Shaded RGB (empty when rgb is not selected).
   std::vector<uint8_t> rgb_scratch;  ///< Edge-filtered RGB before it is swapped into `rgb`.
-  render::ShadeScratch shade_scratch;  ///< Shading's whole-frame buffers, kept for the slot's next frame.
+  /// Shading's whole-frame buffers, lent for each shading: FrameSlots gives its slots one shelf, so a run keeps as
+  /// many as frames shade at once, not one per slot.
+  RecyclingPool<render::ShadeScratch> shade_scratches;
   std::shared_ptr<const SunMaps> sun;  ///< The view's sun passes (with rgb; shared by the frames of a view fan).
   io::EncodedSet files;              ///< Encoded outputs.
   double render_s = 0, shadow_s = 0, shade_s = 0, encode_s = 0;  ///< Per-step wall times.
@@ -117,11 +119,8 @@ class FrameSlots {
   std::shared_ptr<FrameWork> current; ///< The slot the Render phase filled this frame (or null).
 
  private:
-  struct Pool {
-    std::mutex mutex;
-    std::vector<std::unique_ptr<FrameWork>> free;
-  };
-  std::shared_ptr<Pool> pool_ = std::make_shared<Pool>();
+  RecyclingPool<FrameWork> slots_;                      ///< The slots not in flight.
+  RecyclingPool<render::ShadeScratch> shade_scratches_; ///< Shading's buffers, which every slot lends from.
 };
 
 /// Threads from which the sun's passes run beside the camera passes, on a renderer of their own (its buffers add

@@ -192,6 +192,7 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
   const world::PlannedFrame& f = work.frame;
   const Stopwatch clock;
   const render::FrameLighting& lighting = work.lighting;
+  const std::shared_ptr<render::ShadeScratch> scratch = work.shade_scratches.take();
   const std::string noise_stream = io::camera_folder(f.sequence, f.right);
   const render::ShadeInputs in{work.gbuffer,     f.camera,
                                lighting.preset,  &sun.sun->shadow,
@@ -201,7 +202,7 @@ void shade_frame(const world::WorldContext& ctx, FrameWork& work, const FrameWor
                                lighting.white_balance, floor_look(ctx),
                                ev100,            &sun.sun->canopy,
                                ctx.trail_surface, ctx.config.camera.antialias,
-                               &work.shade_scratch};
+                               scratch.get()};
   const render::ShadeCounts counts = render::shade_rgb(in, work.rgb);
   work.bare_soil_pixels = counts.bare_soil_pixels;
   work.ev100 = counts.ev100;
