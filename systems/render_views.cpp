@@ -29,8 +29,11 @@ bool SunKey::operator==(const SunKey& o) const {
          to_sun == o.to_sun;
 }
 
-std::shared_ptr<const SunMaps> SunCache::find(const SunKey& key) const {
-  return key_ && *key_ == key ? last_ : nullptr;
+std::shared_ptr<const SunMaps> SunCache::find(const SunKey& key) {
+  if (key_ && *key_ == key) return last_;
+  key_.reset();
+  last_ = nullptr;
+  return nullptr;
 }
 
 std::shared_ptr<SunMaps> SunCache::take() {
@@ -79,17 +82,17 @@ void render_right(const render::Scene& scene, const render::RenderOptions& optio
   render_camera(scene, right.frame.camera, options, renderer, right);
 }
 
-/// Draws `region` straight down (objects of canopy size only, kCanopyTexel texels) into maps.overhead and
+/// Draws `region` straight down (objects of canopy size only, kCanopyTexel texels) into `overhead` and
 /// makes maps.canopy from it.
 void map_canopy(const render::Scene& scene, const world::WorldContext& ctx, const AABB& region,
-                render::RenderOptions options, render::Renderer& renderer, SunMaps& maps) {
+                render::RenderOptions options, render::Renderer& renderer, render::ShadowMap& overhead, SunMaps& maps) {
   const Vec3f extent = region.max - region.min;
   const int resolution =
       std::clamp(int(std::ceil(double(std::max(extent.x(), extent.y())) / render::kCanopyTexel)), 16, 1024);
   options.min_radius = render::kCanopyMinRadius;
-  renderer.render_shadow_map(scene, Vec3d::UnitZ(), region, resolution, options, maps.overhead);
+  renderer.render_shadow_map(scene, Vec3d::UnitZ(), region, resolution, options, overhead);
   maps.canopy = render::build_canopy_map(
-      maps.overhead, [&](double x, double y) { return double(world::terrain_height(ctx.terrain, x, y)); });
+      overhead, [&](double x, double y) { return double(world::terrain_height(ctx.terrain, x, y)); });
 }
 
 /// Gives `work` the sun maps of its view fan (its left camera alone without one): the cached ones when the
@@ -103,11 +106,12 @@ void render_sun(const PreparedScene& scene, const world::WorldContext& ctx, cons
   const std::vector<Camera> views = world::view_fan(work.frame);
   const render::ShadowPlan plan = render::plan_shadow(views, ground_z, ctx.config.terrain.max_elevation, sun);
   const SunKey key{scene.fan, plan.region, plan.resolution, sun};
-  work.sun = scene.fan ? cache.find(key) : nullptr;
+  work.sun = cache.find(key);  // null without a fan: keys are kept only with one
   if (!work.sun) {
     const std::shared_ptr<SunMaps> maps = cache.take();
     renderer.render_shadow_map(scene.sun_scene(), sun, plan.region, plan.resolution, options, maps->shadow);
-    map_canopy(scene.sun_scene(), ctx, render::canopy_region(plan.region), options, renderer, *maps);
+    map_canopy(scene.sun_scene(), ctx, render::canopy_region(plan.region), options, renderer, cache.canopy_source(),
+               *maps);
     if (scene.fan) cache.keep(key, maps);
     work.sun = maps;
   }

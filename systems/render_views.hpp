@@ -47,9 +47,8 @@ struct CaptureSettings {
 
 /// A view's sun passes.
 struct SunMaps {
-  render::ShadowMap shadow;    ///< The sun shadow map.
-  render::ShadowMap overhead;  ///< The region drawn straight down (the canopy map's source).
-  render::CanopyMap canopy;    ///< The canopy over the view (sky light under trees).
+  render::ShadowMap shadow;  ///< The sun shadow map.
+  render::CanopyMap canopy;  ///< The canopy over the view (sky light under trees).
 };
 
 /// What a set of sun maps was drawn from: the same key, the same maps bit for bit.
@@ -66,17 +65,22 @@ struct SunKey {
 /// phase); frames holding maps may drop them on any thread.
 class SunCache {
  public:
-  /// The last kept maps when `key` is theirs, else null.
-  std::shared_ptr<const SunMaps> find(const SunKey& key) const;
+  /// The last kept maps when `key` is theirs; else null, and the kept maps are let go (another view's maps
+  /// are drawn next, and the set returns to the pool once no frame holds it).
+  std::shared_ptr<const SunMaps> find(const SunKey& key);
   /// Maps no frame holds, to draw into: a recycled set when one is free, else a new one.
   std::shared_ptr<SunMaps> take();
   /// Keeps `maps`, drawn from `key`, for find().
   void keep(SunKey key, std::shared_ptr<const SunMaps> maps);
+  /// The region drawn straight down that a canopy map is made from: one scratch for every set, since the
+  /// Render phase draws one set at a time and the canopy map keeps what it needs.
+  render::ShadowMap& canopy_source() { return canopy_source_; }
 
  private:
   std::vector<std::shared_ptr<SunMaps>> pool_;  ///< Every set made; free when the pool holds its only reference.
   std::optional<SunKey> key_;                   ///< What last_ was drawn from.
   std::shared_ptr<const SunMaps> last_;         ///< The last kept maps.
+  render::ShadowMap canopy_source_;             ///< See canopy_source().
 };
 
 /// One frame travelling from Render through Write; its buffers are reused across frames.

@@ -137,5 +137,27 @@ TEST(ViewFan, AFansFramesShareSunMapsDrawnOnceThatEqualFreshlyDrawnOnes) {
   }
 }
 
+TEST(SunCache, KeptMapsAreFoundByTheirKeyAndLetGoForAnotherSoTheirSetIsDrawnIntoAgain) {
+  SunCache cache;
+  const auto scene = std::make_shared<const FrameScene>();
+  SunKey first{scene, AABB{}, 256, Vec3d::UnitZ()};
+  SunKey second = first;
+  second.resolution = 512;
+  std::shared_ptr<SunMaps> maps = cache.take();
+  const SunMaps* drawn = maps.get();
+  cache.keep(first, maps);
+  maps = nullptr;  // the frame that drew them is done
+  EXPECT_EQ(cache.find(first).get(), drawn);
+  EXPECT_EQ(cache.find(second), nullptr);
+  EXPECT_EQ(cache.find(first), nullptr);     // let go by the other key's lookup
+  EXPECT_EQ(cache.take().get(), drawn);      // so the next fan draws into the same set
+}
+
+TEST(SunCache, ASetAFrameStillHoldsIsNotDrawnInto) {
+  SunCache cache;
+  const std::shared_ptr<SunMaps> held = cache.take();
+  EXPECT_NE(cache.take().get(), held.get());
+}
+
 }  // namespace
 }  // namespace silva::systems
