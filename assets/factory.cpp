@@ -26,6 +26,7 @@ constexpr Factory kFactories[] = {
     {AssetKind::Fern, "wood_sorrel", 20, generate_wood_sorrel},
     {AssetKind::Fern, "woodruff", 20, generate_woodruff},
     {AssetKind::Fern, "nettle", 20, generate_nettle},
+    {AssetKind::Fern, "wood_anemone", 20, generate_wood_anemone},
     {AssetKind::Shrub, "bilberry", 20, generate_bilberry},
     {AssetKind::Shrub, "hazel", 20, generate_hazel},
     {AssetKind::Shrub, "bramble", 20, generate_bramble},

@@ -1,4 +1,5 @@
-// Forest herbs: patches of stems on narrow stalk cards carrying flat leaf cards (wood sorrel, woodruff, nettle).
+// Forest herbs: patches of stems on narrow stalk cards carrying flat leaf cards (wood sorrel, woodruff, nettle,
+// wood anemone with a flower card on each flowering stem).
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -32,7 +33,17 @@ struct HerbPatch {
   float tilt;                                    ///< How far leaf cards tilt from facing up (add_leaf_card).
   std::shared_ptr<const AlphaMask> (*leaf_mask)();  ///< Mask of the leaf cards.
   Material material = Material::Herb;            ///< Material of the stalks and leaves.
+  float top_gap = 0.0f;                          ///< Share of the stem above its highest leaf level (a flower stalk).
+  std::shared_ptr<const AlphaMask> (*flower_mask)() = nullptr;  ///< Mask of the flower cards (null: no flowers).
+  float flower_span[2] = {0.0f, 0.0f};          ///< Range of a flower card's nominal flower span, metres.
+  float flower_share = 0.0f;                     ///< Share of stems that flower.
 };
+
+/// Share of its card's side a flower spans (the flower masks reach 0.46 from the centre).
+constexpr float kFlowerFill = 0.92f;
+
+/// How far flower cards tilt from facing up.
+constexpr float kFlowerTilt = 0.35f;
 
 /// A patch of `look`'s stems, each a stalk card with leaf cards at its levels, all of `look`'s material.
 GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
@@ -56,10 +67,18 @@ GeneratedAsset generate_herb_patch(Rng& rng, const HerbPatch& look) {
   for (const auto& [base, top] : stalks) {  // leaves spread flat at the stem's levels, tilted a little
     const int levels = look.levels[0] + (extra_levels > 0 ? int(rng.below(uint32_t(extra_levels + 1))) : 0);
     for (int k = 0; k < levels; ++k) {
-      const float below_top = look.level_step * float(levels - 1 - k);  // share of the stem below its top (0 at the top)
+      const float below_top = look.top_gap + look.level_step * float(levels - 1 - k);  // share of the stem below its top
       const float scale = levels > 1 && k == levels - 1 ? kTopLevelScale : 1.0f;
       const float across = scale * rng.range(look.span[0], look.span[1]);
       add_leaf_card(b, rng, top - below_top * (top - base), Vec3f::UnitZ(), look.tilt, 0.5f * across / look.fill);
+    }
+  }
+  if (look.flower_mask) {  // one flower at the top of each flowering stem, facing up
+    b.begin_part(Role::GroundVegetation, Material::Petals, look.flower_mask(), true);
+    for (const auto& stalk : stalks) {
+      if (rng.uniform() >= look.flower_share) continue;
+      const float across = rng.range(look.flower_span[0], look.flower_span[1]);
+      add_leaf_card(b, rng, stalk.second, Vec3f::UnitZ(), kFlowerTilt, 0.5f * across / kFlowerFill);
     }
   }
   return {b.finish(), Role::GroundVegetation, CollisionProxy{}};
@@ -78,6 +97,17 @@ GeneratedAsset generate_woodruff(Rng& rng) {
   static const HerbPatch look{{0.12f, 0.28f}, {0.15f, 0.4f}, kMinWoodruffStems, 20, {0.03f, 0.25f},
                               {kWoodruffLevels[0], kWoodruffLevels[1]}, 0.2f, {kWoodruffWhorlSpan[0], kWoodruffWhorlSpan[1]},
                               kWoodruffWhorlFill, 0.25f, woodruff_whorl_mask};
+  return generate_herb_patch(rng, look);
+}
+
+GeneratedAsset generate_wood_anemone(Rng& rng) {  // one leaf whorl below each flower
+  static const HerbPatch look{.height = {0.1f, 0.25f}, .spread = {0.2f, 0.5f}, .min_stems = kMinWoodAnemoneStems,
+                              .extra_stems = 30, .lean = {0.02f, 0.15f}, .levels = {1, 1}, .level_step = 0.0f,
+                              .span = {kWoodAnemoneWhorlSpan[0], kWoodAnemoneWhorlSpan[1]}, .fill = kWoodAnemoneWhorlFill,
+                              .tilt = 0.3f, .leaf_mask = wood_anemone_whorl_mask, .material = Material::Herb,
+                              .top_gap = kWoodAnemoneFlowerStalk, .flower_mask = wood_anemone_flower_mask,
+                              .flower_span = {kWoodAnemoneFlowerSpan[0], kWoodAnemoneFlowerSpan[1]},
+                              .flower_share = kWoodAnemoneFlowering};
   return generate_herb_patch(rng, look);
 }
 

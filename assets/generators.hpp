@@ -76,6 +76,22 @@ inline constexpr int kWoodruffLevels[2] = {3, 4};
 inline constexpr float kWoodruffWhorlSpan[2] = {0.05f, 0.08f};
 /// Share of its card's side a woodruff whorl spans (the mask's leaves reach 0.46 from the centre).
 inline constexpr float kWoodruffWhorlFill = 0.92f;
+/// Wood anemone (spring only): a carpet patch of kMinWoodAnemoneStems-50 stems 5.5-25 cm high, each with one whorl of
+/// three palmately cut leaves kWoodAnemoneWhorlSpan across kWoodAnemoneFlowerStalk of the stem below its top, and on
+/// kWoodAnemoneFlowering of the stems a white flower kWoodAnemoneFlowerSpan across at the top.
+GeneratedAsset generate_wood_anemone(Rng& rng);
+/// Fewest stems of a wood anemone patch.
+inline constexpr int kMinWoodAnemoneStems = 20;
+/// Range of a wood anemone leaf whorl's nominal span, metres (Anemone nemorosa: leaves 3-6 cm, the whorl 6-12 cm).
+inline constexpr float kWoodAnemoneWhorlSpan[2] = {0.065f, 0.11f};
+/// Share of its card's side a wood anemone whorl spans (the mask's leaves reach 0.46 from the centre).
+inline constexpr float kWoodAnemoneWhorlFill = 0.92f;
+/// Share of a wood anemone stem between its leaf whorl and its flower (the flower stalk).
+inline constexpr float kWoodAnemoneFlowerStalk = 0.25f;
+/// Range of a wood anemone flower's span, metres (2-4 cm across).
+inline constexpr float kWoodAnemoneFlowerSpan[2] = {0.022f, 0.038f};
+/// Share of wood anemone stems that flower.
+inline constexpr float kWoodAnemoneFlowering = 0.75f;
 /// Stinging nettle: a clonal patch of kMinNettleStems-32 upright stems 0.28-1.1 m high, each with kNettleLevels
 /// opposite pairs of toothed leaves kNettlePairSpan across (the top pair smaller) down its upper part, drooping;
 /// the fern's material (green, autumn-brown, dead grey-brown stems in winter); grown as a fern-layer herb.

@@ -21,6 +21,10 @@ void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
+    if (season == Season::Spring) {  // young leaves and larch's new needles; ferns and grass as in summer
+      if (is_deciduous_foliage(part.material)) part.material = Material::SpringLeaves;
+      continue;
+    }
     if (part.material == Material::Fern) {  // bracken turns orange-brown, then dies back grey-brown
       part.material = season == Season::Winter ? Material::DeadBracken : Material::AutumnLeaves;
     } else if (part.material == Material::Grass) {  // straw in autumn, dry and pale in winter

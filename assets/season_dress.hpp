@@ -1,6 +1,6 @@
 #pragma once
-/// @file Dresses a generated mesh for its season: deciduous leaf cards turn autumn-coloured, or
-/// become bare twig cards in winter (their coverage, and so the labels, follow the new mask).
+/// @file Dresses a generated mesh for its season: deciduous leaf cards are young and light in spring, turn
+/// autumn-coloured, or become bare twig cards in winter (their coverage, and so the labels, follow the new mask).
 #include "core/mesh.hpp"
 #include "core/season.hpp"
 
@@ -12,7 +12,8 @@ bool is_deciduous_foliage(Material m);
 /// Summer: unchanged. Autumn: deciduous leaf parts get AutumnLeaves, larch needles AutumnNeedles.
 /// Winter: deciduous foliage parts get the bare twig mask and BareTwigs (role unchanged: the bare
 /// crown is still canopy). Fern fronds get AutumnLeaves in autumn and DeadBracken in winter;
-/// grass cards AutumnGrass or WinterGrass. Evergreen needles and everything solid stay as they are.
+/// grass cards AutumnGrass or WinterGrass. Spring: deciduous foliage parts (larch needles included) get
+/// SpringLeaves, the rest stays as in summer. Evergreen needles and everything solid stay as they are.
 void dress_for_season(Mesh& mesh, Season season);
 
 }  // namespace silva::assets

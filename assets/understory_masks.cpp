@@ -232,6 +232,42 @@ std::shared_ptr<const AlphaMask> nettle_pair_mask() {
   return mask;
 }
 
+std::shared_ptr<const AlphaMask> wood_anemone_whorl_mask() {
+  static const auto mask = [] {
+    const Vec2f hub(0.5f, 0.5f);
+    std::vector<Stroke> s;
+    for (int i = 0; i < 3; ++i) {
+      const float deg = 120.0f * float(i) + 20.0f * (jitter(i, 61) - 0.5f);
+      const size_t first = s.size();
+      const Vec2f fork = stroke_towards(hub, deg, 0.12f);  // the leaf stalk, then three narrow segments fanning out
+      s.push_back({hub, fork, 0.012f, 0.01f});
+      for (int k = -1; k <= 1; ++k) {
+        const float seg = deg + 46.0f * float(k), len = (k == 0 ? 0.34f : 0.28f) + 0.02f * jitter(3 * i + k + 1, 62);
+        add_leaf_strokes(s, fork, seg, len, 0.17f * len, 3);
+      }
+      const auto shade = uint8_t(140 + int(60.0f * jitter(i, 63)));
+      for (size_t k = first; k < s.size(); ++k) s[k].alpha = shade;
+    }
+    return rasterise_strokes(s, kWoodAnemoneMaskSize, kWoodAnemoneMaskSize);
+  }();
+  return mask;
+}
+
+std::shared_ptr<const AlphaMask> wood_anemone_flower_mask() {
+  static const auto mask = [] {
+    const Vec2f hub(0.5f, 0.5f);
+    // The stamens: a darker (yellow) disc in the middle.
+    std::vector<Stroke> s = {{hub - Vec2f(0.001f, 0), hub + Vec2f(0.001f, 0), 0.09f, 0.09f, Shape::Tapered, 150}};
+    for (int i = 0; i < kWoodAnemoneTepals; ++i) {
+      const float deg = (360.0f / float(kWoodAnemoneTepals)) * (float(i) + 0.2f * (jitter(i, 71) - 0.5f));
+      const auto shade = uint8_t(215 + int(40.0f * jitter(i, 72)));
+      s.push_back({stroke_towards(hub, deg, 0.06f), stroke_towards(hub, deg, 0.45f), 0.12f, 0, Shape::Round, shade});
+    }
+    return rasterise_strokes(s, kWoodAnemoneMaskSize, kWoodAnemoneMaskSize);
+  }();
+  return mask;
+}
+
 std::shared_ptr<const AlphaMask> herb_stalk_mask() {
   static const auto mask = [] {
     const float h = float(kHerbStalkMaskHeight) / float(kHerbStalkMaskWidth);

@@ -59,6 +59,17 @@ inline constexpr int kNettleMaskSize = 256;
 /// centre (reaching 0.46 of the side), each its own brightness (alpha 128-175: a dark, dull green).
 std::shared_ptr<const AlphaMask> nettle_pair_mask();
 
+/// Texels per side of the wood anemone leaf-whorl and flower masks, and the tepals of its flower.
+inline constexpr int kWoodAnemoneMaskSize = 256, kWoodAnemoneTepals = 6;
+
+/// Wood anemone: one whorl of three stalked leaves 120 degrees apart from the card centre, each palmately cut into
+/// three toothed segments (the whorl reaching 0.46 of the side), each leaf its own brightness (alpha 140-200).
+std::shared_ptr<const AlphaMask> wood_anemone_whorl_mask();
+
+/// Wood anemone flower seen from above: kWoodAnemoneTepals broad elliptic tepals round the card centre (reaching
+/// 0.46 of the side), their bases a little darker, the centre (the yellow stamens) darker still.
+std::shared_ptr<const AlphaMask> wood_anemone_flower_mask();
+
 /// Width and height (texels) of the herb stalk mask.
 inline constexpr int kHerbStalkMaskWidth = 32, kHerbStalkMaskHeight = 256;
 

@@ -42,6 +42,8 @@ enum class Material : uint8_t {
   DeadBracken,    ///< Fern fronds in winter: dull grey-brown standing dead bracken.
   Soil,           ///< Bare forest soil: dark humus, paler mineral patches, small stones (root plates, clods).
   Herb,           ///< Soft leaves of forest herbs (wood sorrel): fresh light green in every season.
+  SpringLeaves,   ///< Young leaves of deciduous trees and shrubs, and larch's new needles, in spring: light yellow-green.
+  Petals,         ///< White petals of spring flowers (wood anemone).
   Count,
 };
 

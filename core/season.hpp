@@ -1,5 +1,5 @@
 #pragma once
-/// @file The season of a world: leaf colour, and bare deciduous trees in winter.
+/// @file The season of a world: leaf colour, bare deciduous trees in winter, spring flowers.
 #include <string_view>
 
 namespace silva {
@@ -9,9 +9,10 @@ enum class Season : unsigned char {
   Summer,  ///< Green leaves.
   Autumn,  ///< Deciduous leaves, larch needles and ferns turn yellow, orange and brown.
   Winter,  ///< Deciduous trees and shrubs bare (twig cards instead of leaves), ferns dead brown.
+  Spring,  ///< Young light green leaves; wood anemone carpets in flower.
 };
 
-/// The config name of a season ("summer", "autumn", "winter").
+/// The config name of a season ("summer", "autumn", "winter", "spring").
 std::string_view season_name(Season s);
 
 /// Parses a season name; false when unknown.

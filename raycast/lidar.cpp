@@ -59,8 +59,10 @@ float nir_reflectivity(Material m) {
     case Material::Needles: case Material::Leaves: case Material::Grass: case Material::Fern:
     case Material::ShrubLeaves: case Material::NeedlesSpruce: case Material::NeedlesPine:
     case Material::NeedlesLarch: case Material::LeavesBeech: case Material::LeavesBirch: case Material::LeavesOak:
-    case Material::Herb:
+    case Material::Herb: case Material::SpringLeaves:
       return 0.55f;  // green foliage reflects strongly in the near infrared
+    case Material::Petals:
+      return 0.6f;
     case Material::Moss:
       return 0.45f;
     case Material::AutumnLeaves: case Material::AutumnNeedles: case Material::LeafLitter:

@@ -56,6 +56,15 @@ Vec3f foliage(const SurfacePoint& s, const Vec3f& base) {
                         s.leaf_shade);
 }
 
+/// White tepals (wood anemone): the mask's brightness and a little mottle, a faint pink on some plants.
+Vec3f petals(const SurfacePoint& s) {
+  const Vec3f& p = s.position;
+  const float scale = kFoliageMottleScale;
+  const float mottle = value_noise3(p.x() * scale, p.y() * scale, p.z() * scale, kFoliageMottleSalt);
+  const float pink = 0.06f * lattice_value(lattice_hash(int32_t(s.variation), 7, 13, kFoliage));
+  return Vec3f(0.6f, 0.58f - pink, 0.56f - 0.5f * pink) * (0.92f + 0.12f * mottle) * s.leaf_shade;
+}
+
 /// Grass: `fresh` with `dry` patches across the ground, lighter towards the blade tip (v = 0).
 Vec3f grass(const SurfacePoint& s, const Vec3f& fresh, const Vec3f& dry) {
   const Vec3f& p = s.position;
@@ -135,6 +144,7 @@ bool plain_foliage_base(Material m, Vec3f& base) {
     case Material::BareTwigs: base = Vec3f(0.11f, 0.095f, 0.08f); return true;
     case Material::DeadBracken: base = Vec3f(0.15f, 0.115f, 0.085f); return true;
     case Material::Herb: base = Vec3f(0.085f, 0.2f, 0.05f); return true;
+    case Material::SpringLeaves: base = Vec3f(0.15f, 0.27f, 0.05f); return true;
     default: return false;
   }
 }
@@ -167,6 +177,7 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BarkBirch:
     case Material::BarkOak: return species_bark(s).albedo;
     case Material::AutumnLeaves: return autumn_leaves(s);
+    case Material::Petals: return petals(s);
     case Material::AutumnGrass: return grass(s, Vec3f(0.19f, 0.17f, 0.06f), Vec3f(0.3f, 0.22f, 0.09f));
     case Material::WinterGrass: return grass(s, Vec3f(0.27f, 0.24f, 0.16f), Vec3f(0.2f, 0.16f, 0.11f));
     case Material::Needles:
@@ -182,7 +193,8 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::AutumnNeedles:
     case Material::BareTwigs:
     case Material::DeadBracken:
-    case Material::Herb:  // plain foliage, returned above
+    case Material::Herb:
+    case Material::SpringLeaves:  // plain foliage, returned above
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);

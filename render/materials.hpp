@@ -173,6 +173,8 @@ inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterial
     {0.75f, 0.04f, 0.3f},  // DeadBracken
     {0.9f, 0.04f, 0.0f},  // Soil
     {0.5f, 0.04f, 1.0f},  // Herb
+    {0.55f, 0.04f, 1.0f},  // SpringLeaves
+    {0.6f, 0.04f, 0.7f},  // Petals
 }};
 
 /// The response of material `m`.

@@ -1,13 +1,15 @@
 #!/usr/bin/python3
-"""Contact sheet of a floor plant (wood sorrel, woodruff, nettle or grass swards): one row per stand, a random view (1920x1080) that
+"""Contact sheet of a floor plant (wood sorrel, woodruff, nettle, grass swards or wood anemone): one row per stand, a random view (1920x1080) that
 shows the plant, at a quarter size, then a full-resolution crop of it, RGB. With --before, each row shows that
 build's view and crop of the same pose first (an older build needs its own asset library: pass a wrapper that
 sets SILVA_ASSETS; where placement draws differ between the builds, the plants around the pose differ too).
 
-Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|nettle|grass_sward] [--silva build/silva] [--before OLD_SILVA]
+Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|nettle|grass_sward|wood_anemone] [--silva build/silva]
+                                     [--before OLD_SILVA]
                                      [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
-       (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg, docs/realism-nettle.jpg or
-       docs/realism-grass.jpg)
+       (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg, docs/realism-nettle.jpg,
+       docs/realism-grass.jpg or docs/realism-spring.jpg; wood anemone grows in spring only, so its rows pair each
+       stand's summer view with its spring view, and --before is not needed)
 """
 import subprocess
 
@@ -27,6 +29,12 @@ PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top,
     "nettle": ("docs/realism-nettle.jpg", [
         ("summer", [], 5, (540, 800)),
         ("winter", ["vegetation.season=winter"], 5, (540, 800)),
+    ]),
+    "wood_anemone": ("docs/realism-spring.jpg", [
+        ("summer", [], 4, (560, 780)),
+        ("spring", ["vegetation.season=spring"], 4, (560, 780)),
+        ("summer", [], 0, (60, 1300)),
+        ("spring", ["vegetation.season=spring"], 0, (60, 1300)),
     ]),
     "grass_sward": ("docs/realism-grass.jpg", [
         ("mixed", [], 4, (730, 0)),

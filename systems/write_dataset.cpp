@@ -31,7 +31,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The season vegetation.season names (the schema allows only the three names).
+/// The season vegetation.season names (the schema allows only the season names).
 Season config_season(const Config& config) {
   Season season = Season::Summer;
   parse_season(config.vegetation.season, season);

@@ -12,14 +12,14 @@ const std::vector<ForestType>& forest_types() {
       // Mixed: every species; spruce is one of its three conifers.
       {.name = "mixed", .conifers = {}, .broadleaves = {}, .shrubs = {}, .herbs = {}, .spruce_litter = 1.0 / 3.0},
       // Even-aged Norway spruce: closed and dark, few shrubs, mostly bare needle litter with moss, ferns and
-      // wood sorrel (no woodruff or nettle: acid needle litter).
+      // wood sorrel (no woodruff, nettle or wood anemone: acid needle litter).
       {.name = "spruce_plantation", .conifer_share = 1.0, .conifers = {"spruce"}, .broadleaves = {}, .shrubs = {},
        .herbs = {"fern", "wood_sorrel"}, .shrub_scale = 0.25,
        .ground_share = 0.35, .fern_bias = 0.15, .needle_litter = 1.0, .spruce_litter = 1.0},
-      // Beech hall forest: tall beech over a bare leaf-litter floor, a little hazel, ferns, wood sorrel and woodruff
-      // (no nettle: it wants the light and nitrogen of open, rich ground).
+      // Beech hall forest: tall beech over a bare leaf-litter floor, a little hazel, ferns, wood sorrel, woodruff and
+      // in spring wood anemone (no nettle: it wants the light and nitrogen of open, rich ground).
       {.name = "beech_hall", .conifer_share = 0.0, .conifers = {}, .broadleaves = {"beech"}, .shrubs = {"hazel"},
-       .herbs = {"fern", "wood_sorrel", "woodruff"}, .shrub_scale = 0.3, .ground_share = 0.15, .needle_litter = 0.0},
+       .herbs = {"fern", "wood_sorrel", "woodruff", "wood_anemone"}, .shrub_scale = 0.3, .ground_share = 0.15, .needle_litter = 0.0},
       // Pine heath: open Scots pine with some birch over bilberry, grass and ferns (no wood sorrel: dry, poor soil).
       {.name = "pine_heath", .conifer_share = 0.85, .conifers = {"pine"}, .broadleaves = {"birch"},
        .shrubs = {"bilberry"}, .herbs = {"fern"}, .shrub_scale = 3.0, .ground_share = 1.0, .fern_bias = -0.3, .needle_litter = 0.85},
@@ -43,5 +43,7 @@ const ForestType& forest_type_of(const std::string& name, uint64_t seed) {
 bool grows(const std::vector<std::string>& list, const std::string& species) {
   return list.empty() || std::find(list.begin(), list.end(), species) != list.end();
 }
+
+bool shows_in(const std::string& species, Season season) { return species != "wood_anemone" || season == Season::Spring; }
 
 }  // namespace silva::world

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/season.hpp"
+
 namespace silva::world {
 
 /// What one forest type grows. Species are asset generators (`spruce`, `beech`, `bilberry`, ...);
@@ -15,7 +17,7 @@ struct ForestType {
   std::vector<std::string> conifers;     ///< Conifer species grown.
   std::vector<std::string> broadleaves;  ///< Broadleaf species grown.
   std::vector<std::string> shrubs;       ///< Shrub species grown.
-  std::vector<std::string> herbs;        ///< Fern-layer species grown (`fern`, `wood_sorrel`, `woodruff`, `nettle`).
+  std::vector<std::string> herbs;        ///< Fern-layer species grown (`fern`, `wood_sorrel`, `woodruff`, `nettle`, `wood_anemone`).
   double shrub_scale = 1.0;              ///< Factor on the share of points that hold a shrub.
   double ground_share = 1.0;             ///< Share of ground-vegetation points with grass and ferns (the rest bare litter).
   double fern_bias = 0.0;                ///< Added to the share of ferns among those tufts (kept within 0 … 1).
@@ -36,5 +38,9 @@ const ForestType& forest_type_of(const std::string& name, uint64_t seed);
 
 /// True when `species` (an asset generator) is in `list`, or `list` is empty.
 bool grows(const std::vector<std::string>& list, const std::string& species);
+
+/// Whether built-in species `species` shows above ground in `season`: wood anemone only in spring (it leafs and
+/// flowers before the canopy closes and dies back by early summer), every other species all year.
+bool shows_in(const std::string& species, Season season);
 
 }  // namespace silva::world

@@ -7,7 +7,8 @@
 
 namespace silva::world {
 
-SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed, const ForestType& forest) {
+SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed, const ForestType& forest,
+                                  Season season) {
   SpeciesStands s;
   std::array<std::vector<std::string>, size_t(AssetKind::Count)> names;
   for (uint32_t a = 0; a < library.assets.size(); ++a) {
@@ -18,7 +19,7 @@ SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t 
                                             : asset.kind == AssetKind::Shrub         ? &forest.shrubs
                                             : asset.kind == AssetKind::Fern          ? &forest.herbs
                                                                                      : nullptr;
-    if (grown && asset.source && !grows(*grown, group)) continue;  // user assets always grow
+    if (grown && asset.source && !(grows(*grown, group) && shows_in(group, season))) continue;  // user assets always grow
     auto& kind_names = names[size_t(asset.kind)];
     auto& kind_groups = s.groups[size_t(asset.kind)];
     const auto it = std::find(kind_names.begin(), kind_names.end(), group);

@@ -8,6 +8,7 @@
 
 #include "assets/library.hpp"
 #include "core/rng.hpp"
+#include "core/season.hpp"
 #include "world/forest_types.hpp"
 
 namespace silva::world {
@@ -26,9 +27,9 @@ struct SpeciesStands {
 };
 
 /// Groups `library`'s assets and seeds the stand field from `seed`; conifers, broadleaves, shrubs and
-/// fern-layer herbs only of the species `forest` grows (every one by default).
+/// fern-layer herbs only of the species `forest` grows (every one by default) and that show in `season`.
 SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t seed,
-                                  const ForestType& forest = forest_types().front());
+                                  const ForestType& forest = forest_types().front(), Season season = Season::Summer);
 
 /// The asset an object of `kind` at (x, y) uses: its stand's dominant species with probability
 /// kDominantShare, else any species; then a uniform variant of that species. Draws from `rng`.

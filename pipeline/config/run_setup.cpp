@@ -105,7 +105,7 @@ RunSetup make_run_setup(const LoadedConfig& loaded) {
   load_run_files(loaded, setup);
   setup.library_json = asset_library_path();
   Season season = Season::Summer;
-  parse_season(loaded.config.vegetation.season, season);  // the schema allows only the three names
+  parse_season(loaded.config.vegetation.season, season);  // the schema allows only the season names
   setup.library = std::make_unique<assets::AssetLibrary>(assets::load_library(setup.library_json, season));
   setup.world = world::make_world_context(loaded.config, *setup.library);
   setup.world.walk_poses = trajectory_file_poses(loaded.config);

@@ -31,6 +31,7 @@ SizeRange expected_size(const Factory& f) {
   if (name == "wood_sorrel") return {0.03f, 0.16f, 0.8f, 0, 0, 320};
   if (name == "woodruff") return {0.06f, 0.32f, 1.0f, 0, 0, 400};
   if (name == "nettle") return {0.25f, 1.25f, 2.2f, 0, 0, 700};
+  if (name == "wood_anemone") return {0.05f, 0.3f, 1.25f, 0, 0, 400};
   if (name == "grass_sward") return {0.03f, 0.2f, 1.0f, 0, 0, 260};
   switch (f.kind) {
     case AssetKind::Stump: return {0.3f, 0.95f, 1.8f, 0, 0, 3000};

@@ -1,4 +1,4 @@
-// Seasons: the same tree shapes, dressed in autumn colours or bare twigs in winter.
+// Seasons: the same tree shapes, dressed in young spring leaves, autumn colours or bare twigs in winter.
 #include "assets/season_dress.hpp"
 
 #include <gtest/gtest.h>
@@ -28,7 +28,7 @@ std::vector<MeshPart> cards(const Mesh& m) {
 TEST(SeasonDress, ShapesNeverDependOnTheSeason) {
   for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern", "wood_sorrel"}) {
     const Mesh summer = variant(prefix, Season::Summer);
-    for (Season s : {Season::Autumn, Season::Winter}) {
+    for (Season s : {Season::Autumn, Season::Winter, Season::Spring}) {
       const Mesh dressed = variant(prefix, s);
       EXPECT_EQ(dressed.positions, summer.positions) << prefix;
       EXPECT_EQ(dressed.indices, summer.indices) << prefix;
@@ -48,6 +48,25 @@ TEST(SeasonDress, AutumnTurnsDeciduousLeavesLarchNeedlesAndFerns) {
   for (const MeshPart& p : cards(variant("fern", Season::Autumn))) EXPECT_EQ(p.material, Material::AutumnLeaves);
   ASSERT_FALSE(cards(variant("grass", Season::Autumn)).empty());
   for (const MeshPart& p : cards(variant("grass", Season::Autumn))) EXPECT_EQ(p.material, Material::AutumnGrass);
+}
+
+TEST(SeasonDress, SpringGivesDeciduousCrownsYoungLeavesAndLeavesEvergreensFernsAndGrassAsInSummer) {
+  for (const char* prefix : {"beech", "birch", "oak", "larch", "hazel"}) {
+    const std::vector<MeshPart> summer = cards(variant(prefix, Season::Summer));
+    const std::vector<MeshPart> spring = cards(variant(prefix, Season::Spring));
+    ASSERT_FALSE(spring.empty()) << prefix;
+    ASSERT_EQ(spring.size(), summer.size()) << prefix;
+    for (size_t k = 0; k < spring.size(); ++k) {
+      EXPECT_EQ(spring[k].material, Material::SpringLeaves) << prefix;
+      EXPECT_EQ(spring[k].mask, summer[k].mask) << prefix;  // leaves, not twigs: the same crowns as in summer
+    }
+  }
+  for (const char* prefix : {"spruce", "pine", "fern", "grass", "wood_sorrel"}) {
+    const std::vector<MeshPart> summer = cards(variant(prefix, Season::Summer));
+    const std::vector<MeshPart> spring = cards(variant(prefix, Season::Spring));
+    ASSERT_EQ(spring.size(), summer.size()) << prefix;
+    for (size_t k = 0; k < spring.size(); ++k) EXPECT_EQ(spring[k].material, summer[k].material) << prefix;
+  }
 }
 
 TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
@@ -92,13 +111,14 @@ TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {
 }
 
 TEST(SeasonDress, NamesRoundTrip) {
-  for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
+  for (Season s : {Season::Summer, Season::Autumn, Season::Winter, Season::Spring}) {
     Season parsed = Season::Summer;
     ASSERT_TRUE(parse_season(season_name(s), parsed));
     EXPECT_EQ(parsed, s);
   }
   Season unused = Season::Summer;
-  EXPECT_FALSE(parse_season("spring", unused));
+  EXPECT_FALSE(parse_season("monsoon", unused));
+  EXPECT_FALSE(parse_season("Spring", unused));
 }
 
 }  // namespace

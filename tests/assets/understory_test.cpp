@@ -230,20 +230,38 @@ struct StemmedHerb {
   size_t min_stems, max_stems;
   size_t min_levels, max_levels;
   float lowest, highest;           ///< Range every leaf level's height lies in.
+  std::shared_ptr<const AlphaMask> flower_mask = nullptr;  ///< Mask of a third, flower part (null: none).
 };
 
-/// Checks every variant of `herb` (a stalk part and a leaf part, levels up every stem, heights in range);
-/// returns the spans of all their leaf levels and, per variant, the highest level's height.
-std::vector<float> stemmed_herb_spans(const StemmedHerb& herb, std::vector<float>& tops) {
+/// Share of its card's side a flower spans (the flower masks reach 0.46 from the centre).
+constexpr float kFlowerFill = 0.92f;
+
+/// The flowers of every variant of a herb.
+struct FlowerCounts {
+  std::vector<float> spans, heights;  ///< Every flower's span and height, metres.
+  size_t stems = 0;                   ///< Stems of every variant.
+};
+
+/// Checks every variant of `herb` (a stalk part, a leaf part and the flower part it has, levels up every stem,
+/// heights in range); returns the spans of all their leaf levels and, per variant, the highest level's height.
+/// Adds the flowers' spans, heights and the variants' stems to `flowers` when the herb has flowers.
+std::vector<float> stemmed_herb_spans(const StemmedHerb& herb, std::vector<float>& tops, FlowerCounts* flowers = nullptr) {
   std::vector<float> spans;
+  const size_t parts = herb.flower_mask ? 3 : 2;
   for (uint32_t v = 0; v < factory(herb.prefix).variants; ++v) {
     const Asset a = make_asset(factory(herb.prefix), kDefaultAssetSeed, v);
     const Mesh& m = a.lods()[0];
     EXPECT_EQ(a.lods().size(), 1u);
-    EXPECT_EQ(m.parts.size(), 2u) << a.name;
-    if (m.parts.size() != 2) continue;
+    EXPECT_EQ(m.parts.size(), parts) << a.name;
+    if (m.parts.size() != parts) continue;
     EXPECT_EQ(m.parts[0].mask, herb_stalk_mask());
     EXPECT_EQ(m.parts[1].mask, herb.leaf_mask);
+    if (flowers) {
+      EXPECT_EQ(m.parts[2].mask, herb.flower_mask);
+      EXPECT_EQ(m.parts[2].material, Material::Petals);
+      herb_leaves(m, m.parts[2], kFlowerFill, flowers->spans, flowers->heights);
+      flowers->stems += m.parts[0].index_count / 6;
+    }
     const size_t stems = m.parts[0].index_count / 6;
     EXPECT_GE(stems, herb.min_stems) << a.name;
     EXPECT_LE(stems, herb.max_stems) << a.name;
@@ -272,6 +290,35 @@ TEST(Understory, WoodruffWhorlsAreEightNarrowLeaves) {
   int covered = 0;
   for (int deg = 0; deg < 360; deg += 3) covered += opaque(float(deg), 0.3f);
   EXPECT_LT(covered, 60);  // narrow: under half the circle is leaf
+}
+
+TEST(Understory, WoodAnemoneStemsCarryALeafWhorlAndMostAFlowerOfBotanicalSize) {
+  std::vector<float> tops;  // one whorl up every stem
+  FlowerCounts flowers;
+  const StemmedHerb anemone{"wood_anemone", wood_anemone_whorl_mask(), kWoodAnemoneWhorlFill, kMinWoodAnemoneStems, 50,
+                            1, 1, 0.02f, 0.25f, wood_anemone_flower_mask()};
+  // Anemone nemorosa: three stem leaves 3-6 cm long, so a whorl 6-12 cm across (smaller and larger plants beside).
+  expect_spans(stemmed_herb_spans(anemone, tops, &flowers), 0.05f, 0.135f, 0.075f, 0.095f);
+  // One white flower 2-4 cm across (a few to 4.5) on most stems, above the leaves.
+  expect_spans(flowers.spans, 0.017f, 0.046f, 0.026f, 0.034f);
+  const double share = double(flowers.spans.size()) / double(flowers.stems);
+  EXPECT_GT(share, 0.65);
+  EXPECT_LT(share, 0.85);
+  expect_heights(flowers.heights, 0.03f, 0.26f, "wood_anemone flowers");
+  std::sort(tops.begin(), tops.end());
+  std::sort(flowers.heights.begin(), flowers.heights.end());
+  EXPECT_GT(flowers.heights[flowers.heights.size() / 2], 0.9f * tops[0]);  // flowers stand over the whorls
+}
+
+TEST(Understory, WoodAnemoneWhorlsAreThreeCutLeavesAndFlowersSixTepals) {
+  const AlphaMask& whorl = *wood_anemone_whorl_mask();
+  ASSERT_EQ(whorl.width, kWoodAnemoneMaskSize);
+  EXPECT_EQ(leaves_round(whorl, 0.06f), 3);   // three leaf stalks from the centre
+  EXPECT_GE(leaves_round(whorl, 0.3f), 7);    // each cut into segments: more than three leaves' worth out there
+  const AlphaMask& flower = *wood_anemone_flower_mask();
+  ASSERT_EQ(flower.width, kWoodAnemoneMaskSize);
+  EXPECT_EQ(leaves_round(flower, 0.35f), kWoodAnemoneTepals);
+  EXPECT_TRUE(opaque_at(flower, 0.0f, 0.0f));  // the stamens fill the middle
 }
 
 TEST(Understory, NettleStemsCarryDroopingLeafPairsOfBotanicalSize) {

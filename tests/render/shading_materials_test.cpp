@@ -23,10 +23,24 @@ TEST(ShadingMaterials, EveryMaterialIsAPlausibleDeterministicAlbedo) {
       const Vec3f a = material_albedo(s);
       EXPECT_TRUE(a.allFinite());
       EXPECT_GT(a.minCoeff(), 0.0f) << material_name(Material(m));
-      EXPECT_LT(a.maxCoeff(), 0.6f) << material_name(Material(m));  // natural surfaces are darker than 60 %
+      // Natural surfaces are darker than 60 %; white petals reflect up to about 80 %.
+      EXPECT_LT(a.maxCoeff(), Material(m) == Material::Petals ? 0.85f : 0.6f) << material_name(Material(m));
       EXPECT_EQ(a, material_albedo(s));
     }
   }
+}
+
+TEST(ShadingMaterials, SpringLeavesAreLighterAndYellowerThanSummersAndPetalsWhite) {
+  for (Material summer : {Material::LeavesBeech, Material::LeavesOak, Material::NeedlesLarch}) {
+    const Vec3f young = material_albedo(point(Material::SpringLeaves)), old = material_albedo(point(summer));
+    EXPECT_GT(young.y(), old.y()) << material_name(summer);
+    EXPECT_GT(young.x() / young.y(), old.x() / old.y()) << material_name(summer);
+    EXPECT_GT(young.y(), young.x());
+  }
+  const Vec3f petal = material_albedo(point(Material::Petals));
+  EXPECT_GT(petal.minCoeff(), 0.85f * petal.maxCoeff());  // white, not tinted
+  EXPECT_GT(petal.minCoeff(), 0.4f);
+  EXPECT_GT(material_response(Material::SpringLeaves).translucency, 0.5f);
 }
 
 TEST(ShadingMaterials, FoliageIsGreenAndVariesPerInstance) {

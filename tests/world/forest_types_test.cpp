@@ -51,10 +51,13 @@ TEST(ForestTypes, MixedKeepsTheDefaultMix) {
   EXPECT_NEAR(sum, 1.0, 1e-12);
 }
 
-/// Objects of a 3 x 3 chunk world of forest type `type`: count per (kind, species), and ground-vegetation count.
-std::pair<std::map<std::pair<AssetKind, std::string>, int>, int> grown(const std::string& type) {
+/// Objects of a 3 x 3 chunk world of forest type `type` in `season`: count per (kind, species), and
+/// ground-vegetation count.
+std::pair<std::map<std::pair<AssetKind, std::string>, int>, int> grown(const std::string& type,
+                                                                       const std::string& season = "summer") {
   Config cfg = test::small_world_config(3, 8);
   cfg.vegetation.forest_type = type;
+  cfg.vegetation.season = season;
   const WorldContext ctx = make_world_context(cfg, library());
   std::map<std::pair<AssetKind, std::string>, int> count;
   int ground = 0;
@@ -105,6 +108,23 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
   EXPECT_FALSE(grows(forest_type_of("pine_heath", 0).herbs, "woodruff"));
   EXPECT_FALSE(grows(forest_type_of("spruce_plantation", 0).herbs, "woodruff"));
   EXPECT_TRUE(grows(forest_type_of("beech_hall", 0).herbs, "woodruff"));
+}
+
+TEST(ForestTypes, WoodAnemoneCarpetsTheMixedStandAndTheBeechHallInSpringOnly) {
+  for (const char* forest : {"mixed", "beech_hall"}) {
+    SCOPED_TRACE(forest);
+    EXPECT_EQ(grown(forest).first.count({AssetKind::Fern, "wood_anemone"}), 0u);
+    EXPECT_EQ(grown(forest, "autumn").first.count({AssetKind::Fern, "wood_anemone"}), 0u);
+    const auto spring = grown(forest, "spring").first;
+    const auto anemone = spring.find({AssetKind::Fern, "wood_anemone"});
+    ASSERT_NE(anemone, spring.end());
+    EXPECT_GT(anemone->second, 10);
+  }
+  for (const char* forest : {"pine_heath", "spruce_plantation"})  // dry heath and acid needle litter
+    EXPECT_EQ(grown(forest, "spring").first.count({AssetKind::Fern, "wood_anemone"}), 0u) << forest;
+  EXPECT_TRUE(shows_in("fern", Season::Winter));
+  EXPECT_FALSE(shows_in("wood_anemone", Season::Summer));
+  EXPECT_TRUE(shows_in("wood_anemone", Season::Spring));
 }
 
 }  // namespace
