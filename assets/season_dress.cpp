@@ -19,6 +19,7 @@ bool is_deciduous_foliage(Material m) {
 
 void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
+  const bool dormant = season == Season::Winter || season == Season::EarlySpring;  // bare crowns, dead ferns
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
     if (season == Season::Spring) {  // young leaves and larch's new needles; ferns and grass as in summer
@@ -26,12 +27,12 @@ void dress_for_season(Mesh& mesh, Season season) {
       continue;
     }
     if (part.material == Material::Fern) {  // bracken turns orange-brown, then dies back grey-brown
-      part.material = season == Season::Winter ? Material::DeadBracken : Material::AutumnLeaves;
+      part.material = dormant ? Material::DeadBracken : Material::AutumnLeaves;
     } else if (part.material == Material::Grass) {  // straw in autumn, dry and pale in winter
-      part.material = season == Season::Winter ? Material::WinterGrass : Material::AutumnGrass;
+      part.material = dormant ? Material::WinterGrass : Material::AutumnGrass;
     } else if (!is_deciduous_foliage(part.material)) {
       continue;
-    } else if (season == Season::Winter) {
+    } else if (dormant) {
       const auto twigs = bare_twigs_for(part.mask.get());  // trees: twigs at their cards' scale
       part.mask = twigs ? twigs : bare_twig_mask();
       part.material = Material::BareTwigs;

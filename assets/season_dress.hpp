@@ -13,7 +13,8 @@ bool is_deciduous_foliage(Material m);
 /// Winter: deciduous foliage parts get the bare twig mask and BareTwigs (role unchanged: the bare
 /// crown is still canopy). Fern fronds get AutumnLeaves in autumn and DeadBracken in winter;
 /// grass cards AutumnGrass or WinterGrass. Spring: deciduous foliage parts (larch needles included) get
-/// SpringLeaves, the rest stays as in summer. Evergreen needles and everything solid stay as they are.
+/// SpringLeaves, the rest stays as in summer. Early spring: as winter. Evergreen needles and everything solid stay
+/// as they are.
 void dress_for_season(Mesh& mesh, Season season);
 
 }  // namespace silva::assets

@@ -5,7 +5,7 @@
 namespace silva {
 
 namespace {
-constexpr std::string_view kNames[] = {"summer", "autumn", "winter", "spring"};
+constexpr std::string_view kNames[] = {"summer", "autumn", "winter", "spring", "early_spring"};
 }  // namespace
 
 std::string_view season_name(Season s) { return kNames[int(s)]; }

@@ -10,9 +10,10 @@ enum class Season : unsigned char {
   Autumn,  ///< Deciduous leaves, larch needles and ferns turn yellow, orange and brown.
   Winter,  ///< Deciduous trees and shrubs bare (twig cards instead of leaves), ferns dead brown.
   Spring,  ///< Young light green leaves; wood anemone carpets in flower.
+  EarlySpring,  ///< Crowns still bare and last year's ferns and grass dead, as in winter; wood anemone in flower.
 };
 
-/// The config name of a season ("summer", "autumn", "winter", "spring").
+/// The config name of a season ("summer", "autumn", "winter", "spring", "early_spring").
 std::string_view season_name(Season s);
 
 /// Parses a season name; false when unknown.

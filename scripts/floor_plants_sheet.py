@@ -8,8 +8,8 @@ Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|nettle|grass_
                                      [--before OLD_SILVA]
                                      [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
        (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg, docs/realism-nettle.jpg,
-       docs/realism-grass.jpg or docs/realism-spring.jpg; wood anemone grows in spring only, so its rows pair each
-       stand's summer view with its spring view, and --before is not needed)
+       docs/realism-grass.jpg or docs/realism-spring.jpg; wood anemone grows in spring and early spring only, so its
+       rows show each view in summer, spring and early spring, and --before is not needed)
 """
 import subprocess
 
@@ -33,8 +33,10 @@ PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top,
     "wood_anemone": ("docs/realism-spring.jpg", [
         ("summer", [], 4, (560, 780)),
         ("spring", ["vegetation.season=spring"], 4, (560, 780)),
+        ("early spr.", ["vegetation.season=early_spring"], 4, (560, 780)),
         ("summer", [], 0, (60, 1300)),
         ("spring", ["vegetation.season=spring"], 0, (60, 1300)),
+        ("early spr.", ["vegetation.season=early_spring"], 0, (60, 1300)),
     ]),
     "grass_sward": ("docs/realism-grass.jpg", [
         ("mixed", [], 4, (730, 0)),

@@ -44,6 +44,8 @@ bool grows(const std::vector<std::string>& list, const std::string& species) {
   return list.empty() || std::find(list.begin(), list.end(), species) != list.end();
 }
 
-bool shows_in(const std::string& species, Season season) { return species != "wood_anemone" || season == Season::Spring; }
+bool shows_in(const std::string& species, Season season) {
+  return species != "wood_anemone" || season == Season::Spring || season == Season::EarlySpring;
+}
 
 }  // namespace silva::world

@@ -39,8 +39,8 @@ const ForestType& forest_type_of(const std::string& name, uint64_t seed);
 /// True when `species` (an asset generator) is in `list`, or `list` is empty.
 bool grows(const std::vector<std::string>& list, const std::string& species);
 
-/// Whether built-in species `species` shows above ground in `season`: wood anemone only in spring (it leafs and
-/// flowers before the canopy closes and dies back by early summer), every other species all year.
+/// Whether built-in species `species` shows above ground in `season`: wood anemone only in spring and early spring
+/// (it leafs and flowers before the canopy closes and dies back by early summer), every other species all year.
 bool shows_in(const std::string& species, Season season);
 
 }  // namespace silva::world

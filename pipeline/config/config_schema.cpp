@@ -178,7 +178,7 @@ std::vector<ConfigKey> build_schema() {
        [](Config& c) -> FieldRef { return &c.vegetation.ground; }},
       {"vegetation.season", T::String,
        "leaf colour; winter: deciduous trees and shrubs bare (labels follow: fewer canopy pixels)", {},
-       {"summer", "autumn", "winter", "spring"}, [](Config& c) -> FieldRef { return &c.vegetation.season; }},
+       {"summer", "autumn", "winter", "spring", "early_spring"}, [](Config& c) -> FieldRef { return &c.vegetation.season; }},
       {"vegetation.forest_type", T::String,
        "what grows: every species (mixed), one species' stand with its own understory, or one drawn per seed", {},
        {"mixed", "spruce_plantation", "beech_hall", "pine_heath", "random"},

@@ -112,7 +112,7 @@ TEST_F(Cli, BadSetAssignments) {
              "--set vegetation.densty=5: unknown key 'vegetation.densty' (did you mean 'vegetation.density'?)");
   expect_bad(run({"generate", "--out", out_, "--set", "vegetation.season=wintr"}), 2,
              "--set vegetation.season=wintr: vegetation.season: \"wintr\" is not allowed (one of summer, autumn, "
-             "winter, spring; did you mean \"winter\"?)");
+             "winter, spring, early_spring; did you mean \"winter\"?)");
 }
 
 TEST_F(Cli, CrossKeyAndFlagErrors) {

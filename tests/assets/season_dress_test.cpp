@@ -6,6 +6,7 @@
 #include "assets/alpha_masks.hpp"
 #include "assets/factory.hpp"
 #include "assets/foliage_sprays.hpp"
+#include "assets/understory_masks.hpp"
 
 namespace silva::assets {
 namespace {
@@ -28,7 +29,7 @@ std::vector<MeshPart> cards(const Mesh& m) {
 TEST(SeasonDress, ShapesNeverDependOnTheSeason) {
   for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern", "wood_sorrel"}) {
     const Mesh summer = variant(prefix, Season::Summer);
-    for (Season s : {Season::Autumn, Season::Winter, Season::Spring}) {
+    for (Season s : {Season::Autumn, Season::Winter, Season::Spring, Season::EarlySpring}) {
       const Mesh dressed = variant(prefix, s);
       EXPECT_EQ(dressed.positions, summer.positions) << prefix;
       EXPECT_EQ(dressed.indices, summer.indices) << prefix;
@@ -69,6 +70,17 @@ TEST(SeasonDress, SpringGivesDeciduousCrownsYoungLeavesAndLeavesEvergreensFernsA
   }
 }
 
+TEST(SeasonDress, EarlySpringIsDressedAsWinter) {
+  for (const char* prefix : {"beech", "larch", "spruce", "hazel", "fern", "grass", "nettle", "wood_sorrel"}) {
+    const Mesh winter = variant(prefix, Season::Winter), early = variant(prefix, Season::EarlySpring);
+    ASSERT_EQ(early.parts.size(), winter.parts.size()) << prefix;
+    for (size_t k = 0; k < winter.parts.size(); ++k) {
+      EXPECT_EQ(early.parts[k].material, winter.parts[k].material) << prefix;
+      EXPECT_EQ(early.parts[k].mask, winter.parts[k].mask) << prefix;
+    }
+  }
+}
+
 TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
   for (const char* prefix : {"fern", "nettle"}) {  // nettle stands die back to grey-brown stems and leaves too
     ASSERT_FALSE(cards(variant(prefix, Season::Winter)).empty()) << prefix;
@@ -79,11 +91,12 @@ TEST(SeasonDress, WinterFernsAreDeadBrackenAndGrassIsDry) {
 }
 
 TEST(SeasonDress, ForestHerbsStayGreenThroughTheYear) {
-  for (const char* prefix : {"wood_sorrel", "woodruff"})
-    for (Season s : {Season::Summer, Season::Autumn, Season::Winter}) {
+  for (const char* prefix : {"wood_sorrel", "woodruff", "wood_anemone"})
+    for (Season s : {Season::Summer, Season::Autumn, Season::Winter, Season::Spring, Season::EarlySpring}) {
       const Mesh m = variant(prefix, s);
       ASSERT_FALSE(m.parts.empty()) << prefix;
-      for (const MeshPart& p : m.parts) EXPECT_EQ(p.material, Material::Herb) << prefix;
+      for (const MeshPart& p : m.parts)  // the anemone's flowers keep their petals
+        EXPECT_EQ(p.material, p.mask == wood_anemone_flower_mask() ? Material::Petals : Material::Herb) << prefix;
     }
 }
 
@@ -111,7 +124,7 @@ TEST(SeasonDress, WinterLeavesDeciduousCrownsBareAndEvergreensGreen) {
 }
 
 TEST(SeasonDress, NamesRoundTrip) {
-  for (Season s : {Season::Summer, Season::Autumn, Season::Winter, Season::Spring}) {
+  for (Season s : {Season::Summer, Season::Autumn, Season::Winter, Season::Spring, Season::EarlySpring}) {
     Season parsed = Season::Summer;
     ASSERT_TRUE(parse_season(season_name(s), parsed));
     EXPECT_EQ(parsed, s);

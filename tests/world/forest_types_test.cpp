@@ -110,7 +110,7 @@ TEST(ForestTypes, EachTypeGrowsOnlyItsSpeciesAndItsUnderstory) {
   EXPECT_TRUE(grows(forest_type_of("beech_hall", 0).herbs, "woodruff"));
 }
 
-TEST(ForestTypes, WoodAnemoneCarpetsTheMixedStandAndTheBeechHallInSpringOnly) {
+TEST(ForestTypes, WoodAnemoneCarpetsTheMixedStandAndTheBeechHallInSpringAndEarlySpringOnly) {
   for (const char* forest : {"mixed", "beech_hall"}) {
     SCOPED_TRACE(forest);
     EXPECT_EQ(grown(forest).first.count({AssetKind::Fern, "wood_anemone"}), 0u);
@@ -119,12 +119,15 @@ TEST(ForestTypes, WoodAnemoneCarpetsTheMixedStandAndTheBeechHallInSpringOnly) {
     const auto anemone = spring.find({AssetKind::Fern, "wood_anemone"});
     ASSERT_NE(anemone, spring.end());
     EXPECT_GT(anemone->second, 10);
+    EXPECT_EQ(grown(forest, "early_spring").first.at({AssetKind::Fern, "wood_anemone"}), anemone->second);
   }
   for (const char* forest : {"pine_heath", "spruce_plantation"})  // dry heath and acid needle litter
     EXPECT_EQ(grown(forest, "spring").first.count({AssetKind::Fern, "wood_anemone"}), 0u) << forest;
   EXPECT_TRUE(shows_in("fern", Season::Winter));
   EXPECT_FALSE(shows_in("wood_anemone", Season::Summer));
   EXPECT_TRUE(shows_in("wood_anemone", Season::Spring));
+  EXPECT_TRUE(shows_in("wood_anemone", Season::EarlySpring));
+  EXPECT_FALSE(shows_in("wood_anemone", Season::Winter));
 }
 
 }  // namespace
