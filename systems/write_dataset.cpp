@@ -10,7 +10,6 @@
 #include "components/phase.hpp"
 #include "components/world_source.hpp"
 #include "core/error.hpp"
-#include "core/season.hpp"
 #include "core/stopwatch.hpp"
 #include "io/atomic_file.hpp"
 #include "io/camera_json.hpp"
@@ -30,13 +29,6 @@ namespace silva::systems {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The season vegetation.season names (the schema allows only the season names).
-Season config_season(const Config& config) {
-  Season season = Season::Summer;
-  parse_season(config.vegetation.season, season);
-  return season;
-}
 
 /// The camera model of a planned frame: `[camera]`'s, with the frame's motion while the shutter is open.
 CameraModel frame_camera_model(const Config& config, const world::PlannedFrame& f) {
@@ -182,7 +174,7 @@ void write_frame(const Config& config, const CaptureSettings& settings, const Fr
 
 /// What lies on the world's forest floor: the season's fresh leaves and the forest type's litter and cones.
 render::FloorLook floor_look(const world::WorldContext& ctx) {
-  return {render::fallen_leaf_cover(config_season(ctx.config)), ctx.forest ? float(ctx.forest->needle_litter) : -1.0f,
+  return {render::fallen_leaf_cover(ctx.season), ctx.forest ? float(ctx.forest->needle_litter) : -1.0f,
           ctx.forest ? float(ctx.forest->spruce_litter) : 0.0f};
 }
 

@@ -31,9 +31,8 @@ WorldContext make_world_context(const Config& cfg, const assets::AssetLibrary& l
   ctx.trail = build_trail(cfg, ctx.terrain);
   ctx.forest = &forest_type_of(cfg.vegetation.forest_type, uint64_t(cfg.seed));
   ctx.trail_surface = trail_surface_of(cfg.trail.surface, uint64_t(cfg.seed));
-  Season season = Season::Summer;
-  parse_season(cfg.vegetation.season, season);  // the schema allows only the season names
-  ctx.stands = make_species_stands(library, uint64_t(cfg.seed), *ctx.forest, season);
+  parse_season(cfg.vegetation.season, ctx.season);  // the schema allows only the season names
+  ctx.stands = make_species_stands(library, uint64_t(cfg.seed), *ctx.forest, ctx.season);
   ctx.footprint.resize(library.assets.size());
   for (size_t a = 0; a < library.assets.size(); ++a) {
     const auto& asset = library.assets[a];

@@ -6,6 +6,7 @@
 
 #include "assets/library.hpp"
 #include "core/config.hpp"
+#include "core/season.hpp"
 #include "core/timed_pose.hpp"
 #include "world/forest_types.hpp"
 #include "world/species_stands.hpp"
@@ -26,6 +27,7 @@ struct WorldContext {
   Trail trail;                                 ///< The trail (enabled = false when off).
   const ForestType* forest = nullptr;          ///< What grows (vegetation.forest_type, drawn for "random").
   TrailSurface trail_surface{};                ///< How the trail looks (trail.surface, drawn for "random").
+  Season season = Season::Summer;              ///< vegetation.season.
   SpeciesStands stands;                        ///< Assets grouped by species, and the stand field.
   std::vector<float> footprint;                ///< Unscaled footprint radius per asset (ground: kGroundFootprint).
   float max_footprint = 0;                     ///< Largest scaled solid footprint radius (rmax), metres.
