@@ -26,11 +26,12 @@ std::vector<uint32_t> block_order(int width, int height) {
 }
 
 void cast_pixels(const RayScene& scene, const Camera& camera, std::span<const uint32_t> pixels,
-                 std::span<RayHit> hits) {
+                 std::span<RayHit> hits, bool exact_masks) {
   if (pixels.size() != hits.size()) throw std::invalid_argument("cast_pixels: pixels and hits differ in size");
   const uint32_t w = uint32_t(camera.width);
   CastOptions options;
   options.eye = camera.position();
+  options.exact_masks = exact_masks;
   // Rays are made per batch on the stack, so a whole frame's rays are never held at once.
   const size_t batches = (pixels.size() + kBatch - 1) / kBatch;
   tbb::parallel_for(size_t(0), batches, [&](size_t b) {

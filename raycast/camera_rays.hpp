@@ -17,8 +17,8 @@ std::vector<uint32_t> block_order(int width, int height);
 /// Casts the rays of `camera` through the centres of `pixels` (indices y * width + x, best in
 /// block_order) into `hits` (same size): from the camera centre, t_near = near, t_far = far, the
 /// direction scaled to camera z = 1 so that a hit's t is its depth along the optical axis. The
-/// ground-cover cut-offs are measured from the camera centre.
+/// ground-cover cut-offs are measured from the camera centre; `exact_masks` as CastOptions::exact_masks.
 void cast_pixels(const RayScene& scene, const Camera& camera, std::span<const uint32_t> pixels,
-                 std::span<RayHit> hits);
+                 std::span<RayHit> hits, bool exact_masks = false);
 
 }  // namespace silva::raycast

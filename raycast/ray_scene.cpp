@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 
 #include <embree3/rtcore.h>
@@ -55,7 +56,20 @@ struct CastContext {
   RTCIntersectContext rtc;                   ///< Must come first.
   const std::vector<Placed>* placed = nullptr;  ///< Instances by top-level geomID.
   Vec3d eye = Vec3d::Zero();                 ///< Where cut-offs are measured from.
+  const Ray* rays = nullptr;  ///< CastOptions::exact_masks: the packet's rays by Embree ray id; else null.
 };
+
+/// Barycentrics (b1, b2) where `ray` meets the plane of triangle t of the part placed as `inst`,
+/// in double (Moller-Trumbore on the world-space corners, as the rasteriser's barycentric planes).
+std::pair<double, double> exact_barycentrics(const PartInfo& p, const Placed& inst, uint32_t t, const Ray& ray) {
+  const uint32_t* idx = &p.mesh->indices[size_t(p.first_triangle + t) * 3];
+  const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
+  const auto corner = [&](int c) { return Vec3d(m.leftCols<3>() * p.mesh->positions[idx[c]].cast<double>() + m.col(3)); };
+  const Vec3d p0 = corner(0), e1 = corner(1) - p0, e2 = corner(2) - p0;
+  const Vec3d pv = ray.direction.cross(e2), s = ray.origin - p0, qv = s.cross(e1);
+  const double det = e1.dot(pv);
+  return {s.dot(pv) / det, ray.direction.dot(qv) / det};
+}
 
 /// True when the part's alpha mask is opaque at barycentrics (b1, b2) of its triangle t (nearest
 /// texel, repeat wrap, as the rasteriser samples it; read from the mask's bits).
@@ -80,10 +94,13 @@ void hit_filter(const RTCFilterFunctionNArguments* args) {
         continue;
       }
     }
-    if (part->part->mask &&
-        !mask_opaque(*part, RTCHitN_primID(args->hit, args->N, i),
-                     RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
-      args->valid[i] = 0;
+    if (!part->part->mask) continue;
+    const uint32_t t = RTCHitN_primID(args->hit, args->N, i);
+    double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i);
+    if (ctx->rays)
+      std::tie(b1, b2) = exact_barycentrics(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
+                                            ctx->rays[RTCRayN_id(args->ray, args->N, i)]);
+    if (!mask_opaque(*part, t, b1, b2)) args->valid[i] = 0;
   }
 }
 
@@ -320,6 +337,7 @@ void RayScene::cast_each(size_t count, const RayMaker& make, const HitTaker& tak
     CastContext ctx = impl_->context(options);
     const size_t first = k * kPacket, n = std::min(kPacket, count - first);
     std::array<Ray, kPacket> rays;
+    if (options.exact_masks) ctx.rays = rays.data();
     RTCRayHit16 rh;
     alignas(64) int valid[kPacket];
     for (size_t j = 0; j < kPacket; ++j) {

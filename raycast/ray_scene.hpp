@@ -53,6 +53,10 @@ struct RayHit {
 struct CastOptions {
   Vec3d eye = Vec3d::Zero();  ///< Viewpoint the RayInstance cut-offs are measured from.
   bool normals = true;        ///< Fill RayHit::normal; false leaves it zero (the geometric normal is always filled).
+  /// Alpha-test masked parts at barycentrics recomputed in double from the caller's ray, as precise
+  /// as the rasteriser's, so both pick the same texel where a ray meets a texel edge; false: from
+  /// Embree's float barycentrics (faster).
+  bool exact_masks = false;
 };
 
 /// The ray-cast scene. Groups of instances (one per chunk) are added and removed by key; commit()

@@ -58,6 +58,17 @@ inline Mesh alpha_card(float side, Role role = Role::TreeCanopy) {
   return m;
 }
 
+/// alpha_card's card with a mask of `texels` x 1 texels, opaque at even u texels (stripes one texel wide).
+inline Mesh striped_card(float side, int texels) {
+  Mesh m = alpha_card(side);
+  auto mask = std::make_shared<AlphaMask>();
+  mask->width = texels;
+  mask->height = 1;
+  for (int k = 0; k < texels; ++k) mask->alpha.push_back(k % 2 ? 0 : 255);
+  m.parts[0].mask = mask;
+  return m;
+}
+
 /// The transform [s*I | t].
 inline Affine3f placed(const Vec3f& t, float s = 1.0f) {
   Affine3f a = Affine3f::Zero();

@@ -255,7 +255,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
       rays.sync(chunks, builder, ground_cover, camera.position());
     const std::vector<uint32_t> pixels = sample_pixels(camera.width, camera.height, request.sample, d.seed, f.global_index);
     hits.resize(pixels.size());
-    raycast::cast_pixels(as_drawn ? drawn.scene() : *rays.scene, camera, pixels, hits);
+    raycast::cast_pixels(as_drawn ? drawn.scene() : *rays.scene, camera, pixels, hits, /*exact_masks=*/true);
     const VerifyTally tally = compare_frame(truth, pixels, hits, d.ontology, options);
     counts.pixels.merge(tally);
     nlohmann::json frame = tally_summary(tally, counts.instances);
