@@ -1,10 +1,12 @@
 #include "world/class_mix.hpp"
 
+#include <algorithm>
+
 namespace silva::world {
 
 using assets::AssetKind;
 
-ClassMix class_mix(double density_percent, bool ground, const ForestType& forest) {
+ClassMix class_mix(double density_percent, bool ground, const ForestType& forest, Season season) {
   const double d = density_percent / 100.0;
   ClassMix m{};
   m[size_t(PointClass::Conifer)] = forest.conifer_share * d;
@@ -17,7 +19,9 @@ ClassMix class_mix(double density_percent, bool ground, const ForestType& forest
   double used = 0;
   for (size_t k = 0; k < size_t(PointClass::Ground); ++k) used += m[k];
   m[size_t(PointClass::Ground)] = ground ? (1.0 - used) * forest.ground_share : 0.0;
-  m[size_t(PointClass::Nothing)] = 1.0 - used - m[size_t(PointClass::Ground)];
+  const double vernal = ground && vernal_season(season) ? std::max(0.0, forest.vernal_share - forest.ground_share) : 0.0;
+  m[size_t(PointClass::Vernal)] = (1.0 - used) * vernal;
+  m[size_t(PointClass::Nothing)] = 1.0 - used - m[size_t(PointClass::Ground)] - m[size_t(PointClass::Vernal)];
   return m;
 }
 

@@ -20,6 +20,9 @@ struct ForestType {
   std::vector<std::string> herbs;        ///< Fern-layer species grown (`fern`, `wood_sorrel`, `woodruff`, `nettle`, `wood_anemone`).
   double shrub_scale = 1.0;              ///< Factor on the share of points that hold a shrub.
   double ground_share = 1.0;             ///< Share of ground-vegetation points with grass and ferns (the rest bare litter).
+  /// Share of ground-vegetation points that are not bare in spring and early spring, when vernal herbs (vernal_herb)
+  /// carpet part of the floor that is bare litter the rest of the year; at most ground_share: none.
+  double vernal_share = 0.0;
   double fern_bias = 0.0;                ///< Added to the share of ferns among those tufts (kept within 0 … 1).
   /// Share of needles in the floor's litter everywhere (render/materials.hpp FloorLook); negative:
   /// stands of needle and of leaf litter across the world.
@@ -42,5 +45,11 @@ bool grows(const std::vector<std::string>& list, const std::string& species);
 /// Whether built-in species `species` shows above ground in `season`: wood anemone only in spring and early spring
 /// (it leafs and flowers before the canopy closes and dies back by early summer), every other species all year.
 bool shows_in(const std::string& species, Season season);
+
+/// True for a built-in species that grows above ground only in spring (`wood_anemone`): a vernal herb.
+bool vernal_herb(const std::string& species);
+
+/// True in the seasons vernal herbs show: spring and early spring.
+bool vernal_season(Season season);
 
 }  // namespace silva::world

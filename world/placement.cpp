@@ -25,6 +25,8 @@ struct PointDraws {
 /// denser canopy) and 0..kMaxDebris-1 pieces of ground-cover debris (twigs, cones, litter, moss).
 constexpr uint32_t kMinTufts = 3;
 constexpr uint32_t kTuftRange = 4;
+/// Vernal points hold this many times a ground point's tufts: vernal herbs carpet the floor they take.
+constexpr uint32_t kVernalTufts = 2;
 constexpr uint32_t kMaxDebris = 3;
 
 /// Sets the terrain height of every candidate of `list` (their world x, y in double in `x`, `y`).
@@ -51,7 +53,7 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
   const double s = cfg.terrain.chunk_size, gs = cfg.vegetation.grid_spacing;
   const int n = int(std::lround(s / gs));
   const double radius = kAdmissibleFraction * gs;
-  const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground, *ctx.forest);
+  const ClassMix mix = class_mix(cfg.vegetation.density, cfg.vegetation.ground, *ctx.forest, ctx.season);
   const double fern_share = std::clamp(0.35 + 2.0 * cfg.vegetation.density / 100.0 + ctx.forest->fern_bias, 0.0, 1.0);
   const double x0 = coord.i * s, y0 = coord.j * s;
   const double pad = ctx.trail.corridor_half_width() + std::max<double>(ctx.max_footprint, kGroundFootprint * kMaxScale);
@@ -62,13 +64,14 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
   // Each candidate's (x, y) in double, beside out.solids and out.ground: heights are filled in at the end,
   // all of a list at once.
   std::vector<double> solid_x, solid_y, ground_x, ground_y;
-  auto propose = [&](AssetKind kind, const PointDraws& d, uint32_t point, uint32_t sub, double cx, double cy) {
+  auto propose = [&](AssetKind kind, const PointDraws& d, uint32_t point, uint32_t sub, double cx, double cy,
+                     bool vernal = false) {
     Rng pos = d.stream(Purpose::PlacementPosition, sub);
     const double r = radius * std::sqrt(pos.uniform_double()), th = kTwoPi * pos.uniform_double();
     const double x = cx + r * std::cos(th), y = cy + r * std::sin(th);
     Rng variant = d.stream(Purpose::PlacementVariant, sub);
     Candidate c;
-    c.asset = pick_asset(ctx.stands, kind, x, y, variant);
+    c.asset = vernal ? pick_vernal(ctx.stands, variant) : pick_asset(ctx.stands, kind, x, y, variant);
     if (c.asset == UINT32_MAX) return;
     c.kind = kind;
     const auto sr = scale_range(kind);
@@ -98,13 +101,17 @@ ChunkCandidates place_candidates(const WorldContext& ctx, ChunkCoord coord, bool
       const double cx = x0 + (gx + 0.5) * gs, cy = y0 + (gy + 0.5) * gs;
       const PointClass cls = pick_class(mix, d.stream(Purpose::PlacementClass, 0).uniform_double());
       if (cls == PointClass::Nothing) continue;
-      if (cls != PointClass::Ground) {
+      if (cls != PointClass::Ground && cls != PointClass::Vernal) {
         propose(kind_of(cls), d, point, 0, cx, cy);
         continue;
       }
       if (!with_ground) continue;
       Rng cover = d.stream(Purpose::GroundCover, 0);
       const uint32_t tufts = kMinTufts + cover.below(kTuftRange);
+      if (cls == PointClass::Vernal) {  // a carpet of vernal herbs on otherwise bare litter, no debris
+        for (uint32_t sub = 0; sub < kVernalTufts * tufts; ++sub) propose(AssetKind::Fern, d, point, sub, cx, cy, true);
+        continue;
+      }
       for (uint32_t sub = 0; sub < tufts; ++sub)
         propose(cover.uniform_double() < fern_share ? AssetKind::Fern : AssetKind::Grass, d, point, sub, cx, cy);
       const uint32_t debris = cover.below(kMaxDebris);

@@ -20,6 +20,7 @@ SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t 
                                             : asset.kind == AssetKind::Fern          ? &forest.herbs
                                                                                      : nullptr;
     if (grown && asset.source && !(grows(*grown, group) && shows_in(group, season))) continue;  // user assets always grow
+    if (asset.kind == AssetKind::Fern && asset.source && vernal_herb(group)) s.vernal.push_back(a);
     auto& kind_names = names[size_t(asset.kind)];
     auto& kind_groups = s.groups[size_t(asset.kind)];
     const auto it = std::find(kind_names.begin(), kind_names.end(), group);
@@ -46,6 +47,10 @@ uint32_t pick_asset(const SpeciesStands& stands, AssetKind kind, double x, doubl
     g = rng.uniform_double() < kDominantShare ? dominant : rng.below(uint32_t(groups.size()));
   }
   return groups[g][rng.below(uint32_t(groups[g].size()))];
+}
+
+uint32_t pick_vernal(const SpeciesStands& stands, Rng& rng) {
+  return stands.vernal.empty() ? UINT32_MAX : stands.vernal[rng.below(uint32_t(stands.vernal.size()))];
 }
 
 }  // namespace silva::world

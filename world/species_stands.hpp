@@ -23,6 +23,7 @@ struct SpeciesStands {
   /// Per kind: asset indices grouped by generator (procedural source; file assets form one group),
   /// groups in order of first appearance in the library.
   std::array<std::vector<std::vector<uint32_t>>, size_t(AssetKind::Count)> groups;
+  std::vector<uint32_t> vernal;  ///< The fern-layer assets of vernal herbs (world::vernal_herb) among them.
   double offset_x = 0, offset_y = 0;  ///< Seeded offset of the stand noise.
 };
 
@@ -35,5 +36,8 @@ SpeciesStands make_species_stands(const assets::AssetLibrary& library, uint64_t 
 /// kDominantShare, else any species; then a uniform variant of that species. Draws from `rng`.
 /// Returns UINT32_MAX when the kind has no assets.
 uint32_t pick_asset(const SpeciesStands& stands, AssetKind kind, double x, double y, Rng& rng);
+
+/// A uniform choice among stands.vernal, drawn from `rng`; UINT32_MAX when it is empty.
+uint32_t pick_vernal(const SpeciesStands& stands, Rng& rng);
 
 }  // namespace silva::world

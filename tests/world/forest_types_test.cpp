@@ -49,6 +49,19 @@ TEST(ForestTypes, MixedKeepsTheDefaultMix) {
   double sum = 0;
   for (double p : beech) sum += p;
   EXPECT_NEAR(sum, 1.0, 1e-12);
+  // In spring and early spring the beech hall's vernal herbs take floor that is bare in the other seasons.
+  EXPECT_EQ(beech[size_t(PointClass::Vernal)], 0.0);
+  EXPECT_EQ(class_mix(5, true, forest_type_of("beech_hall", 0), Season::Winter), beech);
+  const ForestType& hall = forest_type_of("beech_hall", 0);
+  for (Season s : {Season::Spring, Season::EarlySpring}) {
+    const ClassMix spring = class_mix(5, true, hall, s);
+    const double free = spring[size_t(PointClass::Ground)] / hall.ground_share;  // points not held by a solid
+    EXPECT_EQ(spring[size_t(PointClass::Ground)], beech[size_t(PointClass::Ground)]);
+    EXPECT_NEAR(spring[size_t(PointClass::Vernal)], free * (hall.vernal_share - hall.ground_share), 1e-12);
+    EXPECT_NEAR(spring[size_t(PointClass::Nothing)], free * (1.0 - hall.vernal_share), 1e-12);
+    EXPECT_EQ(class_mix(5, false, hall, s)[size_t(PointClass::Vernal)], 0.0);
+  }
+  EXPECT_EQ(class_mix(5, true, forest_types().front(), Season::Spring), m);  // the mixed stand has no bare floor
 }
 
 /// Objects of a 3 x 3 chunk world of forest type `type` in `season`: count per (kind, species), and
@@ -121,6 +134,14 @@ TEST(ForestTypes, WoodAnemoneCarpetsTheMixedStandAndTheBeechHallInSpringAndEarly
     EXPECT_GT(anemone->second, 10);
     EXPECT_EQ(grown(forest, "early_spring").first.at({AssetKind::Fern, "wood_anemone"}), anemone->second);
   }
+  // Under the beech the anemone carpets floor that is bare litter the rest of the year: it outnumbers the other
+  // herbs together, and the hall's ground vegetation more than triples.
+  const auto beech = grown("beech_hall", "spring").first;
+  int others = 0;
+  for (const char* herb : {"fern", "wood_sorrel", "woodruff"})
+    if (beech.count({AssetKind::Fern, herb})) others += beech.at({AssetKind::Fern, herb});
+  EXPECT_GT(beech.at({AssetKind::Fern, "wood_anemone"}), 2 * others);
+  EXPECT_GT(grown("beech_hall", "spring").second, 3 * grown("beech_hall").second);
   for (const char* forest : {"pine_heath", "spruce_plantation"})  // dry heath and acid needle litter
     EXPECT_EQ(grown(forest, "spring").first.count({AssetKind::Fern, "wood_anemone"}), 0u) << forest;
   EXPECT_TRUE(shows_in("fern", Season::Winter));
