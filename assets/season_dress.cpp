@@ -1,7 +1,10 @@
 #include "assets/season_dress.hpp"
 
+#include <algorithm>
+
 #include "assets/alpha_masks.hpp"
 #include "assets/foliage_sprays.hpp"
+#include "assets/understory_masks.hpp"
 
 namespace silva::assets {
 
@@ -17,8 +20,19 @@ bool is_deciduous_foliage(Material m) {
   }
 }
 
+void lay_flat(Mesh& mesh) {
+  for (Vec3f& p : mesh.positions) p = Vec3f(kFlatBrackenSpread * p.x(), kFlatBrackenSpread * p.y(), kFlatBrackenHeight * p.z());
+  for (Vec3f& n : mesh.normals) {
+    const Vec3f t(n.x() / kFlatBrackenSpread, n.y() / kFlatBrackenSpread, n.z() / kFlatBrackenHeight);
+    n = t.norm() > 0.0f ? Vec3f(t.normalized()) : n;
+  }
+}
+
 void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
+  const bool bracken = std::any_of(mesh.parts.begin(), mesh.parts.end(),
+                                   [](const MeshPart& p) { return p.mask && p.mask == pinnate_frond_mask(); });
+  if (season == Season::EarlySpring && bracken) lay_flat(mesh);
   const bool dormant = season == Season::Winter || season == Season::EarlySpring;  // bare crowns, dead ferns
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
