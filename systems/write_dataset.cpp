@@ -243,8 +243,8 @@ void create_output_folders(const fs::path& run_dir, const std::vector<world::Pla
 }
 
 size_t frames_in_flight(size_t threads) {
-  if (threads <= 1) return 1;
-  return std::min(kMaxFramesInFlight, kFramesInFlight + (threads - 2) / kThreadsPerFrameInFlight);
+  if (threads <= 2) return threads == 2 ? kFramesInFlight : 1;
+  return std::min(kMaxFramesInFlight, kFramesInFlightFromThree + (threads - 2) / kThreadsPerFrameInFlight);
 }
 
 void install_write_dataset(ecs::World& world) {

@@ -21,14 +21,17 @@
 
 namespace silva::systems {
 
-/// Frames alive at once on two threads: the one rendering plus those shading, encoding and writing.
-inline constexpr size_t kFramesInFlight = 3;
+/// Frames alive at once on two threads: the one rendering and the one shading, encoding and writing (a third
+/// holds another frame's buffers for no speed there: bench/results/2026-12-02-amd-epyc-2core-frames-in-flight.md).
+inline constexpr size_t kFramesInFlight = 2;
+/// Frames alive at once on three to five threads: the one rendering plus those shading, encoding and writing.
+inline constexpr size_t kFramesInFlightFromThree = 3;
 /// Most frames alive at once: one more per kThreadsPerFrameInFlight threads beyond the first two.
 inline constexpr size_t kMaxFramesInFlight = 5;
 /// Threads that keep one more frame in flight busy: each frame's PNGs are encoded one per thread.
 inline constexpr size_t kThreadsPerFrameInFlight = 4;
 
-/// Frames alive at once on `threads` threads (1 on one thread: each frame written before the next renders).
+/// Frames alive at once on `threads` threads (1 on one thread: each frame written before the next renders; 2 on two).
 size_t frames_in_flight(size_t threads);
 
 /// Counts and per-step wall times of a capture run (seconds summed over frames).
