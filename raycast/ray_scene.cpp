@@ -6,7 +6,6 @@
 #include <map>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 #include <unordered_map>
 
 #include <embree3/rtcore.h>
@@ -59,16 +58,19 @@ struct CastContext {
   const Ray* rays = nullptr;  ///< CastOptions::exact_masks: the packet's rays by Embree ray id; else null.
 };
 
-/// Barycentrics (b1, b2) where `ray` meets the plane of triangle t of the part placed as `inst`,
-/// in double (Moller-Trumbore on the world-space corners, as the rasteriser's barycentric planes).
-std::pair<double, double> exact_barycentrics(const PartInfo& p, const Placed& inst, uint32_t t, const Ray& ray) {
+/// Sets (b1, b2) to the barycentrics where `ray` meets the plane of triangle t of the part placed as `inst`, in
+/// double (Moller-Trumbore on the world-space corners, as the rasteriser's barycentric planes); leaves them when
+/// the ray runs parallel to the plane.
+void exact_barycentrics(const PartInfo& p, const Placed& inst, uint32_t t, const Ray& ray, double& b1, double& b2) {
   const uint32_t* idx = &p.mesh->indices[size_t(p.first_triangle + t) * 3];
   const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
   const auto corner = [&](int c) { return Vec3d(m.leftCols<3>() * p.mesh->positions[idx[c]].cast<double>() + m.col(3)); };
   const Vec3d p0 = corner(0), e1 = corner(1) - p0, e2 = corner(2) - p0;
   const Vec3d pv = ray.direction.cross(e2), s = ray.origin - p0, qv = s.cross(e1);
   const double det = e1.dot(pv);
-  return {s.dot(pv) / det, ray.direction.dot(qv) / det};
+  if (det == 0.0) return;
+  b1 = s.dot(pv) / det;
+  b2 = ray.direction.dot(qv) / det;
 }
 
 /// True when the part's alpha mask is opaque at barycentrics (b1, b2) of its triangle t (nearest
@@ -98,8 +100,8 @@ void hit_filter(const RTCFilterFunctionNArguments* args) {
     const uint32_t t = RTCHitN_primID(args->hit, args->N, i);
     double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i);
     if (ctx->rays)
-      std::tie(b1, b2) = exact_barycentrics(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
-                                            ctx->rays[RTCRayN_id(args->ray, args->N, i)]);
+      exact_barycentrics(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
+                         ctx->rays[RTCRayN_id(args->ray, args->N, i)], b1, b2);
     if (!mask_opaque(*part, t, b1, b2)) args->valid[i] = 0;
   }
 }
