@@ -30,9 +30,8 @@ void lay_flat(Mesh& mesh) {
 
 void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
-  const bool bracken = std::any_of(mesh.parts.begin(), mesh.parts.end(),
-                                   [](const MeshPart& p) { return p.mask && p.mask == pinnate_frond_mask(); });
-  if (season == Season::EarlySpring && bracken) lay_flat(mesh);
+  const auto bracken_frond = [](const MeshPart& p) { return p.mask && p.mask == pinnate_frond_mask(); };
+  if (season == Season::EarlySpring && std::any_of(mesh.parts.begin(), mesh.parts.end(), bracken_frond)) lay_flat(mesh);
   const bool dormant = season == Season::Winter || season == Season::EarlySpring;  // bare crowns, dead ferns
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
