@@ -22,10 +22,10 @@ constexpr Factory kFactories[] = {
     {AssetKind::Grass, "grass", 20, generate_grass},
     {AssetKind::Grass, "grass_tall", 20, generate_tall_grass},
     {AssetKind::Grass, "grass_sward", 20, generate_grass_sward},
-    {AssetKind::Fern, "fern", 20, generate_fern},
+    {AssetKind::Fern, "fern", 20, generate_fern, generate_young_fern},
     {AssetKind::Fern, "wood_sorrel", 20, generate_wood_sorrel},
     {AssetKind::Fern, "woodruff", 20, generate_woodruff},
-    {AssetKind::Fern, "nettle", 20, generate_nettle},
+    {AssetKind::Fern, "nettle", 20, generate_nettle, generate_young_nettle},
     {AssetKind::Fern, "wood_anemone", 20, generate_wood_anemone},
     {AssetKind::Shrub, "bilberry", 20, generate_bilberry},
     {AssetKind::Shrub, "hazel", 20, generate_hazel},
@@ -72,7 +72,7 @@ GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t 
   uint64_t key = 0;
   for (const char* c = factory.prefix; *c; ++c) key = hash_combine(key, uint64_t(uint8_t(*c)));
   Rng rng(seed, hash_combine(key, variant), Purpose::AssetShape);
-  GeneratedAsset g = factory.generate(rng);
+  GeneratedAsset g = season == Season::Spring && factory.young ? factory.young(rng) : factory.generate(rng);
   dress_for_season(g.mesh, season);
   return g;
 }

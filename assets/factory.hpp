@@ -22,6 +22,8 @@ struct Factory {
   const char* prefix;                 ///< Asset names are "<prefix>_<ii>".
   uint32_t variants;                  ///< Variants in the built-in library.
   GeneratedAsset (*generate)(Rng&);   ///< The generator.
+  /// The plant young, for spring (the same draws where it can), or null where spring changes only colours.
+  GeneratedAsset (*young)(Rng&) = nullptr;
 };
 
 /// Every built-in factory, in library order (AssetKind order; several may share a kind).
@@ -30,8 +32,8 @@ std::span<const Factory> factories();
 /// The factory whose prefix is `prefix`, or null.
 const Factory* find_factory(const std::string& prefix);
 
-/// Runs `factory` for `variant` (RNG keyed by the prefix and variant, Purpose::AssetShape) and
-/// dresses the mesh for `season` (dress_for_season; the shape never depends on the season).
+/// Runs `factory` for `variant` (RNG keyed by the prefix and variant, Purpose::AssetShape), its `young`
+/// generator in spring where it has one, and dresses the mesh for `season` (dress_for_season).
 GeneratedAsset generate_variant(const Factory& factory, uint64_t seed, uint32_t variant,
                                 Season season = Season::Summer);
 

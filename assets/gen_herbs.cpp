@@ -118,4 +118,12 @@ GeneratedAsset generate_nettle(Rng& rng) {  // leaf pairs droop; the fern's mate
   return generate_herb_patch(rng, look);
 }
 
+GeneratedAsset generate_young_nettle(Rng& rng) {  // shoots of the same clonal spread, leaves crowded at their tops
+  static const HerbPatch look{{0.18f, 0.35f}, {0.25f, 0.6f}, kMinNettleStems, 16, {0.02f, 0.12f},
+                              {kYoungNettleLevels[0], kYoungNettleLevels[1]}, 0.07f,
+                              {kYoungNettlePairSpan[0], kYoungNettlePairSpan[1]}, kNettlePairFill, 0.5f, nettle_pair_mask,
+                              Material::Fern};
+  return generate_herb_patch(rng, look);
+}
+
 }  // namespace silva::assets

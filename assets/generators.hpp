@@ -56,6 +56,27 @@ inline constexpr int kMinGrassSwardCards = 6;
 /// Fern: a rosette of 5-12 arching pinnate fronds (bent strips of kFrondSegments quads), in three
 /// size classes 0.18-0.4, 0.4-0.7 and 0.7-1.05 m high.
 GeneratedAsset generate_fern(Rng& rng);
+/// The same fern (the same draws) in spring: each frond unrolled for a share kYoungFrondOpen of its grown length,
+/// standing steeply, its pinnae half spread (a strip of kYoungFrondSegments quads), the rest of it rolled up above
+/// in a crozier kCrozierRadius in radius (a solid coil of kCrozierSegments tube sections); young light green
+/// (SpringLeaves).
+GeneratedAsset generate_young_fern(Rng& rng);
+/// Range of the share of its grown length a young frond has unrolled (croziers just up to nearly open).
+inline constexpr float kYoungFrondOpen[2] = {0.1f, 0.6f};
+/// Quads along a young frond's unrolled blade.
+inline constexpr int kYoungFrondSegments = 6;
+/// Tube sections along a crozier's coil.
+inline constexpr int kCrozierSegments = 8;
+inline constexpr int kCrozierSides = 4;  ///< Sides around a crozier's coil.
+/// A crozier coil's thickness (tube radius at its start) per metre of its outer radius; it tapers to 40 % at the tip
+/// (the rolled pinnae fill the coil).
+inline constexpr float kCrozierThickness = 0.5f;
+/// How far (radians) a young frond's unrolled part bends out from its steep start.
+inline constexpr float kYoungFrondBend = 0.35f;
+/// A crozier's outer radius per metre of grown frond (times 1.5 less the unrolled share), clamped to
+/// kCrozierRadius (metres: coils 1.6-4 cm across, as a male fern's or bracken's).
+inline constexpr float kCrozierRadiusPerLength = 0.04f;
+inline constexpr float kCrozierRadius[2] = {0.008f, 0.02f};  ///< Range of a crozier's outer radius, metres.
 /// Wood sorrel: a carpet patch of kMinWoodSorrelLeaves-80 trifoliate leaves spreading flat atop
 /// 5-13 cm stalks, each leaf kWoodSorrelLeafSpan across (x 0.8-1.2); ground vegetation, grown as a fern-layer herb.
 GeneratedAsset generate_wood_sorrel(Rng& rng);
@@ -96,6 +117,13 @@ inline constexpr float kWoodAnemoneFlowering = 0.75f;
 /// opposite pairs of toothed leaves kNettlePairSpan across (the top pair smaller) down its upper part, drooping;
 /// the fern's material (green, autumn-brown, dead grey-brown stems in winter); grown as a fern-layer herb.
 GeneratedAsset generate_nettle(Rng& rng);
+/// Young nettle shoots in spring: the patch's stems 0.1-0.35 m high with kYoungNettleLevels crowded leaf
+/// pairs kYoungNettlePairSpan across.
+GeneratedAsset generate_young_nettle(Rng& rng);
+/// Range of leaf pairs on a young nettle shoot (7 % of its height apart).
+inline constexpr int kYoungNettleLevels[2] = {3, 5};
+/// Range of a young nettle leaf pair's nominal span, metres (leaves 3-7 cm long).
+inline constexpr float kYoungNettlePairSpan[2] = {0.07f, 0.14f};
 /// Fewest stems of a nettle patch.
 inline constexpr int kMinNettleStems = 16;
 /// Range of leaf pairs per nettle stem (a tenth of its height apart).

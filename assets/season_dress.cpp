@@ -31,7 +31,8 @@ void lay_flat(Mesh& mesh) {
 void dress_for_season(Mesh& mesh, Season season) {
   if (season == Season::Summer) return;
   const auto bracken_frond = [](const MeshPart& p) { return p.mask && p.mask == pinnate_frond_mask(); };
-  if (season == Season::EarlySpring && std::any_of(mesh.parts.begin(), mesh.parts.end(), bracken_frond)) lay_flat(mesh);
+  const bool matted = season == Season::EarlySpring && std::any_of(mesh.parts.begin(), mesh.parts.end(), bracken_frond);
+  if (matted) lay_flat(mesh);
   const bool dormant = season == Season::Winter || season == Season::EarlySpring;  // bare crowns, dead ferns
   for (MeshPart& part : mesh.parts) {
     if (!part.mask) continue;
@@ -39,8 +40,8 @@ void dress_for_season(Mesh& mesh, Season season) {
       if (is_deciduous_foliage(part.material)) part.material = Material::SpringLeaves;
       continue;
     }
-    if (part.material == Material::Fern) {  // bracken turns orange-brown, then dies back grey-brown
-      part.material = dormant ? Material::DeadBracken : Material::AutumnLeaves;
+    if (part.material == Material::Fern) {  // bracken turns orange-brown, dies back grey-brown, lies rust-brown
+      part.material = matted ? Material::MattedBracken : dormant ? Material::DeadBracken : Material::AutumnLeaves;
     } else if (part.material == Material::Grass) {  // straw in autumn, dry and pale in winter
       part.material = dormant ? Material::WinterGrass : Material::AutumnGrass;
     } else if (!is_deciduous_foliage(part.material)) {

@@ -14,7 +14,7 @@ bool is_deciduous_foliage(Material m);
 /// crown is still canopy). Fern fronds get AutumnLeaves in autumn and DeadBracken in winter;
 /// grass cards AutumnGrass or WinterGrass. Spring: deciduous foliage parts (larch needles included) get
 /// SpringLeaves, the rest stays as in summer. Early spring: as winter, and bracken (fern fronds) laid flat
-/// (lay_flat). Evergreen needles and everything solid stay as they are.
+/// (lay_flat) and MattedBracken. Evergreen needles and everything solid stay as they are.
 void dress_for_season(Mesh& mesh, Season season);
 
 /// Height factor of last year's bracken in early spring: winter's snow and storms have laid its dead fronds on the litter.

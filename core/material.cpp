@@ -12,7 +12,7 @@ constexpr const char* kNames[int(Material::Count)] = {
     "bark_spruce", "bark_pine", "bark_larch", "bark_beech", "bark_birch", "bark_oak",
     "needles_spruce", "needles_pine", "needles_larch", "leaves_beech", "leaves_birch", "leaves_oak",
     "autumn_leaves", "autumn_needles", "bare_twigs", "autumn_grass", "winter_grass", "dead_bracken", "soil",
-    "herb", "spring_leaves", "petals"};
+    "herb", "spring_leaves", "petals", "matted_bracken"};
 }  // namespace
 
 const char* material_name(Material m) { return kNames[int(m)]; }

@@ -44,6 +44,7 @@ enum class Material : uint8_t {
   Herb,           ///< Soft leaves of forest herbs (wood sorrel): fresh light green in every season.
   SpringLeaves,   ///< Young leaves of deciduous trees and shrubs, and larch's new needles, in spring: light yellow-green.
   Petals,         ///< White petals of spring flowers (wood anemone).
+  MattedBracken,  ///< Last year's bracken lying matted on the litter in early spring: rust to dark brown.
   Count,
 };
 

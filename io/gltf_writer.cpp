@@ -34,7 +34,7 @@ constexpr std::array<std::array<float, 3>, size_t(Material::Count)> kBaseColor =
     {0.22f, 0.40f, 0.10f}, {0.16f, 0.36f, 0.07f}, {0.26f, 0.44f, 0.09f}, {0.12f, 0.28f, 0.06f},
     {0.55f, 0.30f, 0.05f}, {0.55f, 0.42f, 0.08f}, {0.22f, 0.19f, 0.16f}, {0.42f, 0.36f, 0.15f},
     {0.50f, 0.46f, 0.34f}, {0.30f, 0.24f, 0.18f}, {0.12f, 0.09f, 0.06f}, {0.20f, 0.45f, 0.10f},
-    {0.28f, 0.50f, 0.09f}, {0.85f, 0.84f, 0.80f},
+    {0.28f, 0.50f, 0.09f}, {0.85f, 0.84f, 0.80f}, {0.32f, 0.17f, 0.09f},
 }};
 
 /// The binary chunk with its bufferViews and accessors.

@@ -143,6 +143,7 @@ bool plain_foliage_base(Material m, Vec3f& base) {
     case Material::AutumnNeedles: base = Vec3f(0.36f, 0.25f, 0.045f); return true;
     case Material::BareTwigs: base = Vec3f(0.11f, 0.095f, 0.08f); return true;
     case Material::DeadBracken: base = Vec3f(0.15f, 0.115f, 0.085f); return true;
+    case Material::MattedBracken: base = Vec3f(0.12f, 0.06f, 0.03f); return true;
     case Material::Herb: base = Vec3f(0.085f, 0.2f, 0.05f); return true;
     case Material::SpringLeaves: base = Vec3f(0.15f, 0.27f, 0.05f); return true;
     default: return false;
@@ -194,7 +195,8 @@ Vec3f material_albedo(const SurfacePoint& s) {
     case Material::BareTwigs:
     case Material::DeadBracken:
     case Material::Herb:
-    case Material::SpringLeaves:  // plain foliage, returned above
+    case Material::SpringLeaves:
+    case Material::MattedBracken:  // plain foliage, returned above
     case Material::Count: break;
   }
   return Vec3f(0.5f, 0.0f, 0.5f);

@@ -175,6 +175,7 @@ inline constexpr std::array<MaterialResponse, size_t(Material::Count)> kMaterial
     {0.5f, 0.04f, 1.0f},  // Herb
     {0.55f, 0.04f, 1.0f},  // SpringLeaves
     {0.6f, 0.04f, 0.7f},  // Petals
+    {0.8f, 0.04f, 0.2f},  // MattedBracken
 }};
 
 /// The response of material `m`.

@@ -9,8 +9,9 @@ Usage: scripts/floor_plants_sheet.py [--plant wood_sorrel|woodruff|nettle|grass_
                                      [--seed 7] [--scratch /tmp/silva-floor-plants] [--out FILE]
        (--out defaults to docs/realism-herbs.jpg, docs/realism-woodruff.jpg, docs/realism-nettle.jpg,
        docs/realism-grass.jpg or docs/realism-spring.jpg; wood anemone grows in spring and early spring only, so its
-       rows show each view in summer, spring and early spring, then a view in winter and early spring (bracken
-       standing dead, then laid flat), then a beech-hall view in summer and spring, and --before is not needed)
+       rows show each view in summer, spring and early spring, then a fern in summer and spring (unrolling from
+       croziers), then a view in winter and early spring (bracken standing dead, then laid flat), then a beech-hall
+       view in summer and spring, and --before is not needed)
 """
 import subprocess
 
@@ -38,6 +39,8 @@ PLANTS = {  # plant: (default sheet, rows of label, settings, random view, (top,
         ("summer", [], 0, (60, 1300)),
         ("spring", ["vegetation.season=spring"], 0, (60, 1300)),
         ("early spr.", ["vegetation.season=early_spring"], 0, (60, 1300)),
+        ("summer", [], 0, (810, 300)),
+        ("spring", ["vegetation.season=spring"], 0, (810, 300)),
         ("winter", ["vegetation.season=winter"], 1, (760, 1100)),
         ("early spr.", ["vegetation.season=early_spring"], 1, (760, 1100)),
         ("beech sum.", ["vegetation.forest_type=beech_hall"], 0, (780, 1040)),

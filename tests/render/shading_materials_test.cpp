@@ -43,6 +43,16 @@ TEST(ShadingMaterials, SpringLeavesAreLighterAndYellowerThanSummersAndPetalsWhit
   EXPECT_GT(material_response(Material::SpringLeaves).translucency, 0.5f);
 }
 
+TEST(ShadingMaterials, MattedBrackenIsDarkerAndRedderThanStandingDeadBracken) {
+  for (uint32_t variation = 1; variation <= 8; ++variation) {  // the same spot and plant, by plant
+    const Vec3f matted = material_albedo(point(Material::MattedBracken, Vec3f(1, 2, 0.1f), variation));
+    const Vec3f standing = material_albedo(point(Material::DeadBracken, Vec3f(1, 2, 0.1f), variation));
+    EXPECT_LT(matted.sum(), 0.8f * standing.sum());
+    EXPECT_GT(matted.x() / matted.z(), 1.5f * standing.x() / standing.z());  // rust, not grey-brown
+    EXPECT_GT(matted.x(), matted.y());
+  }
+}
+
 TEST(ShadingMaterials, FoliageIsGreenAndVariesPerInstance) {
   for (Material m : {Material::Needles, Material::Leaves, Material::Fern, Material::ShrubLeaves}) {
     const Vec3f a = material_albedo(point(m, Vec3f(1, 2, 3), 1));
