@@ -16,6 +16,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr double kMaxSlope = 8.0;        ///< Largest receiver depth gradient used (metres per metre).
 constexpr double kConstantBias = 0.02;  ///< Metres, on top of half a texel.
+/// Radius (texels) of the round PCF filter: sunflecks and penumbrae come out round (on the ground, ellipses
+/// stretched along the sun's azimuth, as the sun's images through canopy gaps are), not texel squares.
+constexpr float kFilterRadius = 2.0f;
 
 /// Double lanes: one receiver point per lane.
 using DTag = hn::ScalableTag<double>;
@@ -57,12 +60,14 @@ void visibility_lanes(const ShadowMap& map, const Lanes& in, const Vec3f& to_sun
   const auto slope = [&](auto v) { return hn::Min(hn::Max(hn::Div(hn::Neg(v), nlz_safe), set(-kMaxSlope)), set(kMaxSlope)); };
   const auto gx = slope(nlx), gy = slope(nly);
   const auto base = hn::Sub(lz, set(0.5 * texel + kConstantBias));
-  // Tent filter: 4x4 texels with weights (1 - a, 1, 1, a) per axis.
+  // Round filter: the 4x4 texels around the point, texel (i, j) at (i - 1 - ax, j - 1 - ay) texels from it,
+  // each weighing max(0, 1 - d^2 / kFilterRadius^2); the texels beyond the 4x4 lie farther than the radius.
   const auto sx = hn::Sub(fx, set(0.5)), sy = hn::Sub(fy, set(0.5));
   const auto fx0 = hn::Floor(sx), fy0 = hn::Floor(sy);
   const auto ax = hn::DemoteTo(df, hn::Sub(sx, fx0)), ay = hn::DemoteTo(df, hn::Sub(sy, fy0));
-  const auto one_f = hn::Set(df, 1.0f);
-  const decltype(ax) wx[4] = {hn::Sub(one_f, ax), one_f, one_f, ax}, wy[4] = {hn::Sub(one_f, ay), one_f, one_f, ay};
+  const auto squared_offset = [&](int k, auto a) { const auto o = hn::Sub(hn::Set(df, float(k - 1)), a); return hn::Mul(o, o); };
+  const decltype(ax) dx2[4] = {squared_offset(0, ax), squared_offset(1, ax), squared_offset(2, ax), squared_offset(3, ax)};
+  const auto per_r2 = hn::Set(df, 1.0f / (kFilterRadius * kFilterRadius)), one_f = hn::Set(df, 1.0f);
   // Clamped first texel: the clamp also keeps lanes outside the map (or with NaN) in range.
   const auto first = [&](auto f0, int size) {
     const auto t = hn::DemoteTo(di, hn::Min(hn::Max(f0, set(-4.0)), set(double(size) + 4.0)));
@@ -82,16 +87,15 @@ void visibility_lanes(const ShadowMap& map, const Lanes& in, const Vec3f& to_sun
     const auto y = clamp_index(hn::Add(ty, hn::Set(di, j)), map.height);
     const auto row_offset = hn::Mul(gy, hn::Mul(hn::Sub(hn::Add(hn::PromoteTo(d, y), set(0.5)), fy), set(texel)));
     const auto row_start = hn::Mul(y, hn::Set(di, map.width));
-    auto row_lit = hn::Zero(df), row_dark = hn::Zero(df);
+    const auto dy2 = squared_offset(j, ay);
     for (int i = 0; i < 4; ++i) {
       const auto receiver = hn::DemoteTo(df, hn::Add(column_offset[i], row_offset));
       const auto depth = hn::GatherIndex(df, map.depth.data(), hn::Add(row_start, column[i]));
       const auto is_lit = hn::Le(receiver, depth);
-      row_lit = hn::Add(row_lit, hn::IfThenElseZero(is_lit, wx[i]));
-      row_dark = hn::Add(row_dark, hn::IfThenZeroElse(is_lit, wx[i]));
+      const auto w = hn::Max(hn::Sub(one_f, hn::Mul(hn::Add(dx2[i], dy2), per_r2)), hn::Zero(df));
+      lit = hn::Add(lit, hn::IfThenElseZero(is_lit, w));
+      dark = hn::Add(dark, hn::IfThenZeroElse(is_lit, w));
     }
-    lit = hn::Add(lit, hn::Mul(row_lit, wy[j]));
-    dark = hn::Add(dark, hn::Mul(row_dark, wy[j]));
   }
   // Exactly 1 when no tap is shadowed, 0 when every weighted tap is; points outside the map are lit.
   const auto ratio = hn::PromoteTo(d, hn::Div(lit, hn::Add(lit, dark)));  // exact widening and back

@@ -1,12 +1,13 @@
 #pragma once
-/// @file Sun visibility from a render::ShadowMap: normal offset + receiver-plane depth bias + tent-filtered PCF.
+/// @file Sun visibility from a render::ShadowMap: normal offset + receiver-plane depth bias + round-filtered PCF.
 #include "core/types.hpp"
 #include "render/gbuffer.hpp"
 
 namespace silva::render {
 
-/// Fraction in [0, 1] of sun visibility at `position` (1 = lit): 3x3 bilinearly weighted PCF taps,
-/// i.e. a tent filter over the 4x4 texels around it, continuous in the position.
+/// Fraction in [0, 1] of sun visibility at `position` (1 = lit): PCF over the 4x4 texels around it,
+/// each weighing max(0, 1 - d^2 / 4) at d texels from the point (a round filter 2 texels in radius),
+/// continuous in the position.
 /// Texel (tx, ty) is depth[ty * width + tx] (convention in render/gbuffer.hpp). Against acne the
 /// point is pushed one texel along its normal turned towards the sun, and each tap compares the
 /// depth of the receiver's own plane extrapolated to that tap's texel centre (receiver-plane

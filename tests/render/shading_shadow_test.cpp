@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "highway_targets.hpp"
@@ -40,6 +41,22 @@ TEST(ShadingShadow, ShadowStaysAttachedToTheOccluderEdge) {
   EXPECT_EQ(shadow_visibility(map, Vec3f(0.5f, 0.5f, 0), kUp, kUp), 0.0f);
   EXPECT_LT(shadow_visibility(map, Vec3f(0.95f, 0, 0), kUp, kUp), 0.5f);
   EXPECT_EQ(shadow_visibility(map, Vec3f(1.25f, 0, 0), kUp, kUp), 1.0f);
+}
+
+TEST(ShadingShadow, TheShadowOfOneTexelIsRoundNotSquare) {
+  // One occluding texel 2 m above the ground, the sun overhead: at the same distance from it the ground
+  // is as dark along an axis as along a diagonal (a separable tent's square contours darken the diagonal).
+  const ShadowMap map = test::plane_shadow_map(Vec3d(0, 0, 1), 101, 0.1, 0.03, 2.0);
+  int partial = 0;
+  for (double r : {0.05, 0.08, 0.11, 0.14, 0.17}) {
+    const float d = float(r / std::sqrt(2.0));
+    const float axis = shadow_visibility(map, Vec3f(float(r), 0, 0), kUp, kUp);
+    const float diagonal = shadow_visibility(map, Vec3f(d, d, 0), kUp, kUp);
+    partial += axis < 1.0f && diagonal < 1.0f;
+    EXPECT_NEAR(axis, diagonal, 0.03f) << r;
+  }
+  EXPECT_GE(partial, 4);
+  EXPECT_EQ(shadow_visibility(map, Vec3f(0.16f, 0.16f, 0), kUp, kUp), 1.0f);  // beyond the radius on the diagonal
 }
 
 TEST(ShadingShadow, RowLookupIsIdenticalOnEveryHighwayTargetAndMatchesSinglePoints) {
