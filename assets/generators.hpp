@@ -68,8 +68,8 @@ inline constexpr int kYoungFrondSegments = 6;
 /// Tube sections along a crozier's coil.
 inline constexpr int kCrozierSegments = 8;
 inline constexpr int kCrozierSides = 4;  ///< Sides around a crozier's coil.
-/// A crozier coil's thickness (tube radius at its start) per metre of its outer radius; it tapers to 40 % at the tip
-/// (the rolled pinnae fill the coil).
+/// A crozier coil's thickness (the tube's radius at its start) as a share of the coil's outer radius; it tapers to
+/// 40 % at the tip (the rolled pinnae fill the coil).
 inline constexpr float kCrozierThickness = 0.5f;
 /// How far (radians) a young frond's unrolled part bends out from its steep start.
 inline constexpr float kYoungFrondBend = 0.35f;
