@@ -1,7 +1,5 @@
 #include "systems/prefetch_chunks.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <utility>
 
 #include "components/camera.hpp"
@@ -30,12 +28,7 @@ void PrefetchedChunks::start(const world::WorldContext& ctx, std::vector<ChunkCo
   batch_ = std::make_unique<Batch>();
   Batch& b = *batch_;
   b.coords = std::move(coords);
-  b.contents.assign(b.coords.size(), nullptr);
-  b.work.run([&b, &ctx] {
-    tbb::parallel_for(size_t(0), b.coords.size(), [&](size_t k) {
-      b.contents[k] = std::make_shared<ChunkContent>(world::drawable_chunk(ctx, b.coords[k]));
-    });
-  });
+  b.work.run([&b, &ctx] { b.contents = world::drawable_chunks(ctx, b.coords); });
 }
 
 std::vector<std::shared_ptr<ChunkContent>> PrefetchedChunks::take(const std::vector<ChunkCoord>& wanted) {

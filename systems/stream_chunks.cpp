@@ -1,7 +1,6 @@
 #include "systems/stream_chunks.hpp"
 
 #include <algorithm>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -11,20 +10,18 @@
 #include "systems/prefetch_chunks.hpp"
 #include "world/chunk_cache.hpp"
 #include "world/chunk_content.hpp"
+#include "world/chunk_regions.hpp"
 #include "world/world_context.hpp"
 
 namespace silva::systems {
 
 namespace {
 
-/// The chunks within `ring` of any of `full` that are not in `full`, sorted.
+/// The chunks within `ring` of any of `full` (sorted) that are not in `full`, sorted.
 std::vector<ChunkCoord> halo_of(const std::vector<ChunkCoord>& full, int ring) {
-  std::set<ChunkCoord> halo;
-  for (ChunkCoord c : full)
-    for (int dj = -ring; dj <= ring; ++dj)
-      for (int di = -ring; di <= ring; ++di) halo.insert(ChunkCoord{c.i + di, c.j + dj});
-  for (ChunkCoord c : full) halo.erase(c);
-  return {halo.begin(), halo.end()};
+  std::vector<ChunkCoord> halo = world::ring_neighbours(full, ring);
+  std::erase_if(halo, [&](ChunkCoord c) { return std::binary_search(full.begin(), full.end(), c); });
+  return halo;
 }
 
 /// Stores the prefetched chunks when they are exactly the needed chunks the cache lacks (as store_chunks would:

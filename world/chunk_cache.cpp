@@ -14,14 +14,19 @@ ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord) {
   return c;
 }
 
+std::vector<std::shared_ptr<ChunkContent>> drawable_chunks(const WorldContext& ctx, const std::vector<ChunkCoord>& coords) {
+  std::vector<ChunkContent> made = generate_chunks(ctx, coords);
+  std::vector<std::shared_ptr<ChunkContent>> out(made.size());
+  tbb::parallel_for(size_t(0), made.size(), [&](size_t k) {
+    add_terrain_level(made[k]);
+    out[k] = std::make_shared<ChunkContent>(std::move(made[k]));
+  });
+  return out;
+}
+
 std::vector<std::shared_ptr<const ChunkContent>> ChunkCache::require(const WorldContext& ctx,
                                                                      const std::vector<ChunkCoord>& coords) {
-  const std::vector<ChunkCoord> todo = missing(coords);
-  std::vector<std::shared_ptr<ChunkContent>> fresh(todo.size());
-  tbb::parallel_for(size_t(0), todo.size(), [&](size_t k) {
-    fresh[k] = std::make_shared<ChunkContent>(drawable_chunk(ctx, todo[k]));
-  });
-  insert(std::move(fresh));
+  insert(drawable_chunks(ctx, missing(coords)));
   return take(coords);
 }
 

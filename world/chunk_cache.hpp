@@ -25,6 +25,9 @@ class ChunkSource {
 /// Chunk `coord` as the renderer draws it: generated, plus its terrain's coarse level and bounds.
 ChunkContent drawable_chunk(const WorldContext& ctx, ChunkCoord coord);
 
+/// drawable_chunk of each of `coords` (distinct), in that order, generated together (generate_chunks).
+std::vector<std::shared_ptr<ChunkContent>> drawable_chunks(const WorldContext& ctx, const std::vector<ChunkCoord>& coords);
+
 /// LRU cache of chunk contents keyed by chunk coordinates, as the renderer draws them: each with
 /// its terrain's coarse level and bounds (ChunkContent::terrain_lod, terrain_bounds).
 class ChunkCache : public ChunkSource {

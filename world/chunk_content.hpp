@@ -41,7 +41,7 @@ struct ChunkStats {
   uint64_t narrow_queries = 0;   ///< Narrow-phase fcl::collide calls.
   uint64_t triangles = 0;        ///< Terrain triangles (the trail is part of the terrain).
   double generate_s = 0;         ///< Terrain mesh time (not part of the content hash).
-  double place_s = 0;            ///< Placement time, own and neighbour candidates.
+  double place_s = 0;            ///< Placement time of its own candidates (its neighbours' are shared).
   double resolve_s = 0;          ///< Resolve time.
 };
 

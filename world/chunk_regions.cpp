@@ -53,6 +53,17 @@ bool box_meets_polygon(double x0, double y0, double x1, double y1, const std::ve
 
 }  // namespace
 
+std::vector<ChunkCoord> ring_neighbours(const std::vector<ChunkCoord>& coords, int ring) {
+  std::vector<ChunkCoord> out;
+  for (ChunkCoord c : coords)
+    for (int dj = -ring; dj <= ring; ++dj)
+      for (int di = -ring; di <= ring; ++di)
+        if (di != 0 || dj != 0) out.push_back(ChunkCoord{c.i + di, c.j + dj});
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 double distance_to_chunk(ChunkCoord c, double s, double x, double y) {
   const double dx = gap(c.i * s, (c.i + 1) * s, x, x), dy = gap(c.j * s, (c.j + 1) * s, y, y);
   return std::sqrt(dx * dx + dy * dy);

@@ -24,6 +24,10 @@ std::vector<ChunkCoord> chunks_in_view(const Camera& camera, double chunk_size);
 /// around the camera whose objects may cast shadows into the view; sorted, unique.
 std::vector<ChunkCoord> chunks_for_view(const Camera& camera, double chunk_size, double shadow_reach);
 
+/// The chunks within `ring` chunks (in i and in j) of one of `coords`, other than that chunk itself; sorted,
+/// unique (a chunk of `coords` is listed when it lies within the ring of another).
+std::vector<ChunkCoord> ring_neighbours(const std::vector<ChunkCoord>& coords, int ring);
+
 /// Horizontal distance from (x, y) to the footprint of chunk c (0 inside).
 double distance_to_chunk(ChunkCoord c, double chunk_size, double x, double y);
 

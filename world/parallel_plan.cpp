@@ -13,33 +13,44 @@ namespace {
 constexpr size_t kTasksPerThread = 4;
 }  // namespace
 
-SharedChunks::Slot& SharedChunks::slot(ChunkCoord c) {
+std::vector<SharedChunks::Slot> SharedChunks::claim(const std::vector<ChunkCoord>& coords,
+                                                    const std::shared_ptr<Batch>& fresh) {
   const std::lock_guard lock(mutex_);
-  std::unique_ptr<Slot>& s = slots_[c];
-  if (!s) s = std::make_unique<Slot>();
-  return *s;
+  std::vector<Slot> out;
+  out.reserve(coords.size());
+  for (ChunkCoord c : coords) {
+    const auto [it, added] = slots_.try_emplace(c);
+    Slot& s = it->second;
+    if (added) {
+      // The cache never hands out a chunk made const: its contents are made mutable and shared read-only.
+      if (std::shared_ptr<const ChunkContent> cached = cache_->find(c)) {
+        s.cached = std::const_pointer_cast<ChunkContent>(cached);
+      } else {
+        s.batch = fresh;
+        s.index = fresh->coords.size();
+        fresh->coords.push_back(c);
+      }
+    }
+    out.push_back(s);
+  }
+  return out;
 }
 
 std::vector<std::shared_ptr<ChunkContent>> SharedChunks::get(const WorldContext& ctx,
                                                              const std::vector<ChunkCoord>& coords) {
-  std::vector<std::shared_ptr<ChunkContent>> out(coords.size());
-  tbb::parallel_for(size_t(0), coords.size(), [&](size_t k) {
-    Slot& s = slot(coords[k]);
-    tbb::collaborative_call_once(s.once, [&] {
-      // The cache never hands out a chunk made const: its contents are made mutable and shared read-only.
-      if (std::shared_ptr<const ChunkContent> cached = cache_->find(coords[k]))
-        s.content = std::const_pointer_cast<ChunkContent>(cached);
-      else
-        s.content = std::make_shared<ChunkContent>(drawable_chunk(ctx, coords[k]));
-    });
-    out[k] = s.content;
-  });
+  const std::vector<Slot> slots = claim(coords, std::make_shared<Batch>());
+  std::vector<std::shared_ptr<ChunkContent>> out;
+  out.reserve(slots.size());
+  for (const Slot& s : slots) {
+    if (s.batch) tbb::collaborative_call_once(s.batch->once, [&] { s.batch->contents = drawable_chunks(ctx, s.batch->coords); });
+    out.push_back(s.content());
+  }
   return out;
 }
 
 std::shared_ptr<ChunkContent> SharedChunks::asked(ChunkCoord c) const {
   const std::lock_guard lock(mutex_);
-  return slots_.at(c)->content;
+  return slots_.at(c).content();
 }
 
 std::vector<std::shared_ptr<const ChunkContent>> RecordedChunks::require(const WorldContext& ctx,

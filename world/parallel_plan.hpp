@@ -20,23 +20,33 @@ class SharedChunks {
  public:
   /// Reads the chunks present in `cache`, which must not change while tasks ask.
   explicit SharedChunks(const ChunkCache& cache) : cache_(&cache) {}
-  /// The chunks of `coords` in that order (those neither asked for before nor cached generated in parallel).
+  /// The chunks of `coords` in that order: those neither asked for before nor cached generated together
+  /// (drawable_chunks), the ones another task is making waited for (or helped with).
   std::vector<std::shared_ptr<ChunkContent>> get(const WorldContext& ctx, const std::vector<ChunkCoord>& coords);
   /// Content of a chunk some task asked for; throws std::out_of_range for one no task did.
   std::shared_ptr<ChunkContent> asked(ChunkCoord c) const;
 
  private:
-  /// One chunk: made once, by whichever task asks first (the others help or wait).
-  struct Slot {
+  /// Chunks one get() call generates: made once, by whichever task asks first (the others help or wait).
+  struct Batch {
     tbb::collaborative_once_flag once;
-    std::shared_ptr<ChunkContent> content;
+    std::vector<ChunkCoord> coords;
+    std::vector<std::shared_ptr<ChunkContent>> contents;
   };
-  /// The slot of `c`, made on first use.
-  Slot& slot(ChunkCoord c);
+  /// One chunk: read from the cache, or made as entry `index` of `batch`.
+  struct Slot {
+    std::shared_ptr<ChunkContent> cached;
+    std::shared_ptr<Batch> batch;
+    size_t index = 0;
+    /// The content (its batch made).
+    const std::shared_ptr<ChunkContent>& content() const { return batch ? batch->contents[index] : cached; }
+  };
+  /// The slots of `coords`, in that order; chunks neither cached nor in a slot yet join `fresh`.
+  std::vector<Slot> claim(const std::vector<ChunkCoord>& coords, const std::shared_ptr<Batch>& fresh);
 
   const ChunkCache* cache_;
   mutable std::mutex mutex_;
-  std::map<ChunkCoord, std::unique_ptr<Slot>> slots_;
+  std::map<ChunkCoord, Slot> slots_;
 };
 
 /// One planning task's chunk source: hands out SharedChunks' chunks and records what it asked for, in order.

@@ -1,12 +1,15 @@
 #include "world/world_generator.hpp"
 
-#include <map>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <string>
 #include <utility>
 
 #include "core/error.hpp"
 #include "core/instance_id.hpp"
 #include "core/stopwatch.hpp"
+#include "world/chunk_regions.hpp"
 #include "world/terrain_lod.hpp"
 
 namespace silva::world {
@@ -65,19 +68,25 @@ ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord, const Chu
 }
 
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord) {
-  const Stopwatch clock;
-  const ChunkCandidates own = place_candidates(ctx, coord, true);
-  std::map<ChunkCoord, ChunkCandidates> around;
-  const int ring = ctx.neighbour_ring;
-  for (int dj = -ring; dj <= ring; ++dj)
-    for (int di = -ring; di <= ring; ++di)
-      if (di != 0 || dj != 0) {
-        const ChunkCoord n{coord.i + di, coord.j + dj};
-        around.emplace(n, place_candidates(ctx, n, false));
-      }
-  const double place_s = clock.seconds();
-  ChunkContent out = generate_chunk(ctx, coord, own, [&](ChunkCoord c) -> const ChunkCandidates& { return around.at(c); });
-  out.stats.place_s = place_s;
+  return std::move(generate_chunks(ctx, {coord}).front());
+}
+
+std::vector<ChunkContent> generate_chunks(const WorldContext& ctx, const std::vector<ChunkCoord>& coords) {
+  const std::vector<ChunkCoord> around = ring_neighbours(coords, ctx.neighbour_ring);
+  std::vector<ChunkCandidates> around_candidates(around.size());
+  tbb::parallel_for(size_t(0), around.size(),
+                    [&](size_t k) { around_candidates[k] = place_candidates(ctx, around[k], false); });
+  const CandidateLookup lookup = [&](ChunkCoord c) -> const ChunkCandidates& {
+    return around_candidates[size_t(std::lower_bound(around.begin(), around.end(), c) - around.begin())];
+  };
+  std::vector<ChunkContent> out(coords.size());
+  tbb::parallel_for(size_t(0), coords.size(), [&](size_t k) {
+    const Stopwatch clock;
+    const ChunkCandidates own = place_candidates(ctx, coords[k], true);
+    const double place_s = clock.seconds();
+    out[k] = generate_chunk(ctx, coords[k], own, lookup);
+    out[k].stats.place_s = place_s;
+  });
   return out;
 }
 

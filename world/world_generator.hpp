@@ -7,8 +7,13 @@
 
 namespace silva::world {
 
-/// Generates chunk `coord` completely (its neighbours' candidates are recomputed as needed).
+/// Generates chunk `coord` completely (generate_chunks of that one chunk).
 ChunkContent generate_chunk(const WorldContext& ctx, ChunkCoord coord);
+
+/// Generates each of `coords` (distinct) completely, in parallel, in that order: the candidates of every chunk
+/// within the neighbour ring of one of them are placed once for the whole batch. Each chunk equals
+/// generate_chunk of it alone.
+std::vector<ChunkContent> generate_chunks(const WorldContext& ctx, const std::vector<ChunkCoord>& coords);
 
 /// Generates chunk `coord` with candidates looked up (e.g. precomputed for a whole region);
 /// `own` must be place_candidates(ctx, coord, true). Same result as generate_chunk.

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+
 #include "core/camera.hpp"
 #include "world/chunk_regions.hpp"
 #include "world/terrain_lod.hpp"
@@ -58,6 +61,43 @@ TEST(ChunkCache, WalkingTheTrailKeepsLiveChunksBounded) {
   }
   EXPECT_LE(peak, bound);
   EXPECT_GT(cache.generated(), bound / 2);
+}
+
+/// One chunk generated alone, with its own and each neighbour's candidates placed for it only.
+ChunkContent generated_alone(const WorldContext& ctx, ChunkCoord coord) {
+  std::map<ChunkCoord, ChunkCandidates> around;
+  for (ChunkCoord n : ring_neighbours({coord}, ctx.neighbour_ring)) around.emplace(n, place_candidates(ctx, n, false));
+  return generate_chunk(ctx, coord, place_candidates(ctx, coord, true),
+                        [&](ChunkCoord c) -> const ChunkCandidates& { return around.at(c); });
+}
+
+TEST(ChunkCache, ABatchSharingNeighboursEqualsEachChunkAlone) {
+  const WorldContext ctx = make_world_context(test::small_world_config(4, 1), test::small_library());
+  // A block whose chunks are each other's neighbours, and one apart from it.
+  const std::vector<ChunkCoord> coords{{1, 1}, {2, 1}, {1, 2}, {2, 2}, {-3, 0}};
+  const std::vector<ChunkContent> batch = generate_chunks(ctx, coords);
+  ASSERT_EQ(batch.size(), coords.size());
+  size_t objects = 0;
+  for (size_t k = 0; k < coords.size(); ++k) {
+    EXPECT_EQ(batch[k].coord, coords[k]);
+    EXPECT_EQ(chunk_hash(batch[k]), chunk_hash(generated_alone(ctx, coords[k]))) << coords[k].i << "," << coords[k].j;
+    objects += batch[k].objects.size();
+  }
+  EXPECT_GT(objects, 0u);
+  const auto drawable = drawable_chunks(ctx, coords);
+  EXPECT_EQ(drawable[4]->terrain_lod.indices, drawable_chunk(ctx, coords[4]).terrain_lod.indices);
+}
+
+TEST(ChunkCache, RingNeighboursListTheRingAroundEachChunkOnce) {
+  const std::vector<ChunkCoord> one = ring_neighbours({{0, 0}}, 1);
+  EXPECT_EQ(one.size(), 8u);
+  EXPECT_FALSE(std::binary_search(one.begin(), one.end(), ChunkCoord{0, 0}));
+  // Two chunks side by side: each lies in the other's ring; 12 chunks in all.
+  const std::vector<ChunkCoord> two = ring_neighbours({{0, 0}, {1, 0}}, 1);
+  EXPECT_EQ(two.size(), 12u);
+  EXPECT_TRUE(std::binary_search(two.begin(), two.end(), ChunkCoord{0, 0}));
+  EXPECT_TRUE(std::binary_search(two.begin(), two.end(), ChunkCoord{1, 0}));
+  EXPECT_TRUE(std::is_sorted(two.begin(), two.end()));
 }
 
 }  // namespace silva::world
