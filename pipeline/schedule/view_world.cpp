@@ -100,8 +100,8 @@ ViewWorld::ViewWorld(LoadedConfig loaded) : loaded_(std::move(loaded)), setup_(m
 
 bool ViewWorld::blocked(const Vec3d& eye) {
   const world::WorldContext& ctx = setup_.world;
-  world::ChunkCache& cache = schedule_->ecs().resource<world::ChunkCache>();
-  return !world::ClearanceProbe::around(ctx, cache, *crowns_, eye.x(), eye.y(), 0.0).column_clear(eye);
+  ScheduleChunks chunks(*schedule_);
+  return !world::ClearanceProbe::around(ctx, chunks, *crowns_, eye.x(), eye.y(), 0.0).column_clear(eye);
 }
 
 world::PlannedFrame ViewWorld::view_frame(const ViewPose& pose, int width, int height) const {

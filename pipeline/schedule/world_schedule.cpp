@@ -173,6 +173,18 @@ world::WorldTotals WorldSchedule::warm(std::vector<ChunkCoord> coords) {
   return totals;
 }
 
+std::vector<std::shared_ptr<const ChunkContent>> WorldSchedule::chunks(const std::vector<ChunkCoord>& coords) {
+  world::ChunkCache& cache = world_.resource<world::ChunkCache>();
+  const std::vector<ChunkCoord> missing = cache.missing(coords);
+  if (!missing.empty()) stream_pinned(missing, true);
+  return cache.take(coords);
+}
+
+std::vector<std::shared_ptr<const ChunkContent>> ScheduleChunks::require(const world::WorldContext& /*ctx*/,
+                                                                                const std::vector<ChunkCoord>& coords) {
+  return schedule_->chunks(coords);
+}
+
 world::BuiltWorld build_world(const world::WorldContext& ctx, std::vector<ChunkCoord> coords, int threads) {
   const Stopwatch clock;
   world::BuiltWorld w;

@@ -12,6 +12,7 @@
 #include "ecs/world.hpp"
 #include "systems/render_views.hpp"
 #include "systems/write_dataset.hpp"
+#include "world/chunk_cache.hpp"
 #include "world/plan_captures.hpp"
 #include "world/world_context.hpp"
 #include "world/world_summary.hpp"
@@ -49,6 +50,10 @@ class WorldSchedule {
   /// ready for views (with their coarse terrain level); returns their totals (timings left zero).
   world::WorldTotals warm(std::vector<ChunkCoord> coords);
 
+  /// The drawable chunks of `coords`, in that order, marked recently used (world::ChunkCache::take): those the
+  /// cache lacks streamed by the schedule's systems in one schedule frame with them pinned and no camera.
+  std::vector<std::shared_ptr<const ChunkContent>> chunks(const std::vector<ChunkCoord>& coords);
+
   /// The ECS world (its resources, entities and system timings).
   ecs::World& ecs() { return world_; }
 
@@ -69,5 +74,19 @@ world::BuiltWorld build_world(const world::WorldContext& ctx, std::vector<ChunkC
 
 /// build_world over world::default_world_chunks(ctx.config).
 world::BuiltWorld build_default_world(const world::WorldContext& ctx, int threads);
+
+/// A WorldSchedule as a chunk source (WorldSchedule::chunks) for code that asks for chunks between schedule
+/// frames: a pose's clearance in `silva view`, the frames `silva verify` casts against.
+class ScheduleChunks final : public world::ChunkSource {
+ public:
+  /// Asks `schedule`, which must outlive this.
+  explicit ScheduleChunks(WorldSchedule& schedule) : schedule_(&schedule) {}
+  /// The schedule's chunks of `coords` (the context is the schedule's own).
+  std::vector<std::shared_ptr<const ChunkContent>> require(const world::WorldContext& ctx,
+                                                                  const std::vector<ChunkCoord>& coords) override;
+
+ private:
+  WorldSchedule* schedule_;
+};
 
 }  // namespace silva::pipeline

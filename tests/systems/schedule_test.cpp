@@ -148,5 +148,27 @@ TEST(Schedule, PrefetchedChunksAreHandedOverOnlyWhenTheyAreExactlyTheOnesWanted)
   EXPECT_EQ(got[1]->terrain_lod.positions, world::drawable_chunk(ctx, {1, 0}).terrain_lod.positions);
 }
 
+TEST(Schedule, ChunksAskedBetweenFramesAreStreamedByTheSystemsInTheOrderAsked) {
+  const world::WorldContext ctx = walk_context();
+  WorldSchedule schedule(ctx, 64);
+  ScheduleChunks source(schedule);
+  const std::vector<ChunkCoord> asked{{2, 1}, {0, 0}, {1, 0}};
+  const auto got = source.require(ctx, asked);
+  ASSERT_EQ(got.size(), asked.size());
+  for (size_t k = 0; k < asked.size(); ++k) {
+    EXPECT_EQ(got[k]->coord, asked[k]);
+    const ChunkContent alone = world::drawable_chunk(ctx, asked[k]);
+    EXPECT_EQ(world::chunk_hash(*got[k]), world::chunk_hash(alone));
+    EXPECT_EQ(got[k]->terrain_lod.indices, alone.terrain_lod.indices);  // drawable: with the coarse terrain
+  }
+  const world::ChunkCache& cache = schedule.ecs().resource<world::ChunkCache>();
+  EXPECT_EQ(cache.generated(), 3u);
+  EXPECT_EQ(cache.recency().front(), (ChunkCoord{1, 0}));  // the last asked is the most recent
+  // Asking again streams only the chunk the cache lacks, and leaves no chunk entity behind.
+  schedule.chunks({{0, 0}, {3, 3}});
+  EXPECT_EQ(cache.generated(), 4u);
+  EXPECT_EQ(schedule.ecs().view<const Chunk>().size_hint(), 0u);
+}
+
 }  // namespace
 }  // namespace silva::pipeline

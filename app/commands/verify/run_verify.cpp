@@ -13,6 +13,7 @@
 #include "pipeline/config/config_checks.hpp"
 #include "pipeline/config/config_print.hpp"
 #include "pipeline/config/run_setup.hpp"
+#include "pipeline/schedule/world_schedule.hpp"
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "core/stopwatch.hpp"
@@ -24,7 +25,6 @@
 #include "raycast/camera_rays.hpp"
 #include "systems/aim_camera.hpp"
 #include "systems/cast_lidar.hpp"
-#include "world/chunk_cache.hpp"
 #include "app/cli/pipeline_names.hpp"
 
 namespace silva::app {
@@ -229,7 +229,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
                 " frames" + (stereo ? " (both cameras of the stereo pair)" : "") + ", " +
                 std::to_string(int(std::lround(100 * request.sample))) + " % of their pixels");
 
-  world::ChunkCache cache(kCacheChunks);
+  pipeline::WorldSchedule schedule(setup.world, kCacheChunks);  // streams the chunks each frame casts against
   const bool as_drawn = loaded.config.render.lod && !request.full_detail;
   const double ground_cover = loaded.config.render.ground_cover_distance;
   systems::ChunkRayScene rays;  // full detail: groups per chunk, kept while frames share chunks
@@ -248,7 +248,7 @@ int run_verify(const VerifyRequest& request, const Reporter& reporter) {
   const auto check_view = [&](const io::DatasetFrame& f, bool right) {
     const Camera camera = io::read_camera_json(d.file(f, io::camera_folder("camera", right), "json")).camera;
     const FrameTruth truth = read_truth(d, f, camera, right);
-    const auto chunks = cache.require(setup.world, systems::capture_chunks(camera, setup.world.chunk_size(), lidar_reach));
+    const auto chunks = schedule.chunks(systems::capture_chunks(camera, setup.world.chunk_size(), lidar_reach));
     if (as_drawn)
       drawn.show(builder.build(chunks, camera.position(), ground_cover), camera);
     else
