@@ -1,8 +1,12 @@
 // LiDAR benchmarks: one os1_64 sweep (64 beams x 2048 columns = 131 k rays) through the ray-cast
 // scene of the default forest around the middle autopilot pose, and the scene update per streamed
 // chunk, on 1 and 2 threads. The scene (every chunk within the preset's range, full-detail meshes)
-// is built once outside the timed region; its build time is reported as setup_ms.
+// is built once outside the timed region; its build time is reported as setup_ms. The environment
+// variable SILVA_BENCH_EMBREE passes Embree a device configuration: SILVA_BENCH_EMBREE=isa=avx2 runs
+// the sweep on Embree's AVX2 kernels (the sweep's own code has no ISA dispatch), as on an AVX2-only CPU.
 #include <benchmark/benchmark.h>
+
+#include <cstdlib>
 
 #include <tbb/task_arena.h>
 
@@ -29,7 +33,10 @@ struct LidarWorld {
   systems::SceneBuilder builder{*library};
   systems::ChunkRayScene rays;
   double setup_ms = 0;
+  std::string embree_config;  ///< SILVA_BENCH_EMBREE, if set.
   LidarWorld() {
+    if (const char* c = std::getenv("SILVA_BENCH_EMBREE")) embree_config = c;
+    rays.scene = std::make_unique<raycast::RayScene>(embree_config);
     cfg.seed = 1234567890;
     const toml::table file = toml::parse_file(pipeline::data_path("configs/lidar.toml").string());
     preset = pipeline::parse_lidar_presets(*file["lidar"]["presets"].as_table(), "lidar.toml").at("os1_64");
@@ -74,6 +81,7 @@ void BM_LidarSweep(benchmark::State& state) {
   state.counters["chunks"] = double(w.chunks.size());
   state.counters["setup_ms"] = w.setup_ms;
   state.counters["threads"] = double(state.range(0));
+  if (!w.embree_config.empty()) state.SetLabel("embree " + w.embree_config);
 }
 BENCHMARK(BM_LidarSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 

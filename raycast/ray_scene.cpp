@@ -58,17 +58,20 @@ struct CastContext {
   const Ray* rays = nullptr;  ///< CastOptions::exact_masks: the packet's rays by Embree ray id; else null.
 };
 
-/// Sets (b1, b2) to the barycentrics where `ray` meets the plane of triangle t of the part placed as `inst`, in
-/// double (Moller-Trumbore on the world-space corners, as the rasteriser's barycentric planes); leaves them when
-/// the ray runs parallel to the plane.
-void exact_barycentrics(const PartInfo& p, const Placed& inst, uint32_t t, const Ray& ray, double& b1, double& b2) {
-  const uint32_t* idx = &p.mesh->indices[size_t(p.first_triangle + t) * 3];
+/// Sets t and (b1, b2) to where `ray` meets the plane of triangle `tri` of the part placed as `inst`: the ray
+/// parameter and the barycentrics, in double (Moller-Trumbore on the world-space corners, as the rasteriser's
+/// barycentric planes), so they depend on the triangle and the ray alone, not on which of Embree's SIMD kernels
+/// found the hit; leaves them when the ray runs parallel to the plane.
+void exact_intersection(const PartInfo& p, const Placed& inst, uint32_t tri, const Ray& ray, double& t, double& b1,
+                        double& b2) {
+  const uint32_t* idx = &p.mesh->indices[size_t(p.first_triangle + tri) * 3];
   const Eigen::Matrix<double, 3, 4> m = inst.object_to_world.cast<double>();
   const auto corner = [&](int c) { return Vec3d(m.leftCols<3>() * p.mesh->positions[idx[c]].cast<double>() + m.col(3)); };
   const Vec3d p0 = corner(0), e1 = corner(1) - p0, e2 = corner(2) - p0;
   const Vec3d pv = ray.direction.cross(e2), s = ray.origin - p0, qv = s.cross(e1);
   const double det = e1.dot(pv);
   if (det == 0.0) return;
+  t = e2.dot(qv) / det;
   b1 = s.dot(pv) / det;
   b2 = ray.direction.dot(qv) / det;
 }
@@ -98,10 +101,10 @@ void hit_filter(const RTCFilterFunctionNArguments* args) {
     }
     if (!part->part->mask) continue;
     const uint32_t t = RTCHitN_primID(args->hit, args->N, i);
-    double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i);
+    double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i), at = 0.0;
     if (ctx->rays)
-      exact_barycentrics(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
-                         ctx->rays[RTCRayN_id(args->ray, args->N, i)], b1, b2);
+      exact_intersection(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
+                         ctx->rays[RTCRayN_id(args->ray, args->N, i)], at, b1, b2);
     if (!mask_opaque(*part, t, b1, b2)) args->valid[i] = 0;
   }
 }
@@ -197,19 +200,23 @@ struct RayScene::Impl {
     std::erase_if(mask_bits, [](const auto& kv) { return kv.second.second.use_count() == 1; });  // no part uses it
   }
 
-  /// Fills `h` from an Embree hit of ray `ray`.
+  /// Fills `h` from an Embree hit of ray `ray` on triangle `prim`, with the distance and barycentrics
+  /// recomputed by exact_intersection (Embree's float ones, `t`, `bu` and `bv`, differ in their last bits
+  /// between its kernels: AVX-512, AVX2 and SSE4.2 machines would write different LiDAR ranges).
   void describe_hit(const Ray& ray, float t, unsigned inst_id, unsigned geom, unsigned prim, float bu, float bv,
                     bool normals, RayHit& h) const {
     const Placed& inst = placed[inst_id];
     const PartInfo& p = *inst.entry->parts[geom];
     const Mesh& mesh = *p.mesh;
     const uint32_t* idx = &mesh.indices[size_t(p.first_triangle + prim) * 3];
-    const double b1 = bu, b2 = bv, b0 = 1.0 - b1 - b2;
+    double exact_t = t, b1 = bu, b2 = bv;
+    exact_intersection(p, inst, prim, ray, exact_t, b1, b2);
+    const double b0 = 1.0 - b1 - b2;
     const Mat3d lin = inst.object_to_world.block<3, 3>(0, 0).cast<double>();
     const Vec3d dir = ray.direction;
     h.hit = true;
-    h.t = t;
-    const Vec3d pos = ray.origin + double(t) * dir;
+    h.t = float(exact_t);
+    const Vec3d pos = ray.origin + exact_t * dir;
     h.position = pos.cast<float>();
     const Vec3d p0 = mesh.positions[idx[0]].cast<double>(), p1 = mesh.positions[idx[1]].cast<double>(),
                 p2 = mesh.positions[idx[2]].cast<double>();
@@ -254,8 +261,8 @@ struct RayScene::Impl {
   }
 };
 
-RayScene::RayScene() : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(nullptr);
+RayScene::RayScene(const std::string& device_config) : impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice(device_config.empty() ? nullptr : device_config.c_str());
   if (!impl_->device) throw std::runtime_error("ray caster: rtcNewDevice failed");
   impl_->top = rtcNewScene(impl_->device);
   rtcSetSceneFlags(impl_->top, RTC_SCENE_FLAG_ROBUST);

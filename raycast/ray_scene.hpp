@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/material.hpp"
@@ -65,8 +66,9 @@ struct CastOptions {
 /// committed instances, never on the thread count.
 class RayScene {
  public:
-  /// An empty scene on a new Embree device.
-  RayScene();
+  /// An empty scene on a new Embree device, configured by `device_config` (Embree's
+  /// rtcNewDevice string, e.g. "isa=avx2" to limit its kernels to AVX2; empty: its defaults).
+  explicit RayScene(const std::string& device_config = {});
   /// Releases the BVHs and the device.
   ~RayScene();
   RayScene(const RayScene&) = delete;
