@@ -1,9 +1,12 @@
 #include <malloc.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 
 #include "app/cli/cli.hpp"
+#include "app/cli/simd_limit.hpp"
 
 namespace {
 
@@ -25,5 +28,13 @@ void keep_frame_buffers_in_heap() {
 /// Entry point: all work happens in run_cli so tests can call it in-process.
 int main(int argc, char** argv) {
   keep_frame_buffers_in_heap();
+  if (const char* limit = std::getenv("SILVA_SIMD_LIMIT"); limit && *limit) {
+    try {
+      silva::app::apply_simd_limit(limit);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "silva: error: %s\n", e.what());
+      return 2;
+    }
+  }
   return silva::app::run_cli(argc, argv);
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
@@ -261,8 +262,19 @@ struct RayScene::Impl {
   }
 };
 
+namespace {
+/// set_default_device_config's value.
+std::string& default_device_config() {
+  static std::string config;
+  return config;
+}
+}  // namespace
+
+void set_default_device_config(std::string device_config) { default_device_config() = std::move(device_config); }
+
 RayScene::RayScene(const std::string& device_config) : impl_(std::make_unique<Impl>()) {
-  impl_->device = rtcNewDevice(device_config.empty() ? nullptr : device_config.c_str());
+  const std::string& config = device_config.empty() ? default_device_config() : device_config;
+  impl_->device = rtcNewDevice(config.empty() ? nullptr : config.c_str());
   if (!impl_->device) throw std::runtime_error("ray caster: rtcNewDevice failed");
   impl_->top = rtcNewScene(impl_->device);
   rtcSetSceneFlags(impl_->top, RTC_SCENE_FLAG_ROBUST);

@@ -60,6 +60,10 @@ struct CastOptions {
   bool exact_masks = false;
 };
 
+/// Sets the Embree device configuration of scenes made without one (empty, the start: Embree's own
+/// defaults); call before any scene is made.
+void set_default_device_config(std::string device_config);
+
 /// The ray-cast scene. Groups of instances (one per chunk) are added and removed by key; commit()
 /// rebuilds the top-level BVH, and a mesh's BVH is built when a group first uses it and released
 /// when no group does. Casting is thread-safe after commit(); a ray's result depends only on the
@@ -67,7 +71,8 @@ struct CastOptions {
 class RayScene {
  public:
   /// An empty scene on a new Embree device, configured by `device_config` (Embree's
-  /// rtcNewDevice string, e.g. "isa=avx2" to limit its kernels to AVX2; empty: its defaults).
+  /// rtcNewDevice string, e.g. "isa=avx2" to limit its kernels to AVX2; empty: the process's
+  /// default, set_default_device_config).
   explicit RayScene(const std::string& device_config = {});
   /// Releases the BVHs and the device.
   ~RayScene();
