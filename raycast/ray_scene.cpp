@@ -102,10 +102,10 @@ void hit_filter(const RTCFilterFunctionNArguments* args) {
     }
     if (!part->part->mask) continue;
     const uint32_t t = RTCHitN_primID(args->hit, args->N, i);
-    double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i), at = 0.0;
+    double b1 = RTCHitN_u(args->hit, args->N, i), b2 = RTCHitN_v(args->hit, args->N, i), plane_t = 0.0;
     if (ctx->rays)
       exact_intersection(*part, (*ctx->placed)[RTCHitN_instID(args->hit, args->N, i, 0)], t,
-                         ctx->rays[RTCRayN_id(args->ray, args->N, i)], at, b1, b2);
+                         ctx->rays[RTCRayN_id(args->ray, args->N, i)], plane_t, b1, b2);
     if (!mask_opaque(*part, t, b1, b2)) args->valid[i] = 0;
   }
 }

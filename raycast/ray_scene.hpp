@@ -67,7 +67,8 @@ void set_default_device_config(std::string device_config);
 /// The ray-cast scene. Groups of instances (one per chunk) are added and removed by key; commit()
 /// rebuilds the top-level BVH, and a mesh's BVH is built when a group first uses it and released
 /// when no group does. Casting is thread-safe after commit(); a ray's result depends only on the
-/// committed instances, never on the thread count.
+/// committed instances, never on the thread count, nor on whether Embree runs its AVX-512 or AVX2
+/// kernels (a hit's distance and barycentrics are recomputed in double).
 class RayScene {
  public:
   /// An empty scene on a new Embree device, configured by `device_config` (Embree's

@@ -9,6 +9,7 @@ meet a foliage mask at a texel edge (docs/CONTRACT.md "LiDAR"), but only a few i
 Usage: simd_limit_test.py SILVA_BINARY SCRATCH_DIR
 """
 import hashlib
+import json
 import os
 import pathlib
 import shutil
@@ -52,6 +53,10 @@ def main() -> int:
     best = hashes(generate(silva, scratch / "best", {}))
     assert any(name.endswith(".bin") for name in best) and any(name.endswith(".png") for name in best), best
     avx2 = hashes(generate(silva, scratch / "avx2", {"SILVA_SIMD_LIMIT": "avx2", "GLIBC_TUNABLES": NO_FMA}))
+    for run, limit in (("best", None), ("avx2", "avx2")):
+        simd = json.loads((scratch / run / "0000000033" / "run.json").read_text())["simd"]
+        assert simd["limit"] == limit and simd["targets"], simd
+        assert limit is None or not any(t.startswith("AVX3") for t in simd["targets"]), simd
     differ = sorted(name for name in best if avx2.get(name) != best[name])
     assert not differ and avx2.keys() == best.keys(), f"AVX2 without FMA writes other files: {differ[:10]}"
 

@@ -11,6 +11,7 @@
 #include "io/sha256.hpp"
 #include "systems/cast_lidar.hpp"
 #include "app/cli/pipeline_names.hpp"
+#include "app/cli/simd_limit.hpp"
 
 namespace silva::app {
 
@@ -145,6 +146,8 @@ nlohmann::json make_run_record(const systems::CaptureStats& s, int threads, int 
       {"git_revision", git_revision()},
       {"threads", threads},
       {"host", host},
+      {"simd", {{"targets", simd_targets()},
+                {"limit", simd_limit().empty() ? nlohmann::json(nullptr) : nlohmann::json(simd_limit())}}},
       {"date", date},
       {"frames_written", s.frames_written},
       {"frames_skipped_complete", skipped},
