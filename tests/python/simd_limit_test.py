@@ -4,7 +4,8 @@ this machine's best SIMD code, then again as an AVX2 machine without FMA in libm
 (SILVA_SIMD_LIMIT=avx2 caps Highway's targets and Embree's kernels; GLIBC_TUNABLES keeps glibc's maths off
 its FMA variants) and as an SSE4 machine would. Every file but run*.json must be byte-identical, on SSE4 but
 the LiDAR scans, their labels and the card that counts them: points may differ where Embree's SSE4.2 kernels
-meet a foliage mask at a texel edge (docs/CONTRACT.md "LiDAR"), but only a few in a thousand may. A bad SILVA_SIMD_LIMIT is exit 2.
+meet a foliage mask at a texel edge (docs/CONTRACT.md "LiDAR"), but only a few in a thousand may. A bad
+SILVA_SIMD_LIMIT is exit 2.
 
 Usage: simd_limit_test.py SILVA_BINARY SCRATCH_DIR
 """
