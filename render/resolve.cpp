@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "render/hit_geometry.hpp"
 #include "render/raster_conventions.hpp"
 #include "core/surface_overlay.hpp"
 
@@ -49,14 +50,8 @@ struct HitTriangle {
   const Mesh* mesh = nullptr;                     ///< The LOD drawn.
   const uint32_t* idx = nullptr;                  ///< Its three vertex indices.
   const MeshPart* part = nullptr;                 ///< Its part (role, material).
-  Vec3d p[3];                                     ///< World-space vertices.
-  Vec3d e1, e2;                                   ///< Edges p1 - p0 and p2 - p0.
-  Vec3d s;                                        ///< Camera origin - p0 (Moller-Trumbore).
-  Vec3d qvec;                                     ///< s x e1: constant over the triangle's pixels.
-  double e2_dot_q = 0;                            ///< e2 . qvec (t = e2_dot_q / det).
-  Mat3d cof;                                      ///< Normal transform (cofactor of the linear part).
+  HitGeometry geo;                                ///< What its pixels' hit geometry reads.
   Eigen::Matrix<double, 3, 4> m;                  ///< The instance's object -> world transform.
-  double mask_texels_per_metre = 0;               ///< Masked part: mask texels per metre of the triangle (isotropic).
   const AlphaMask* mips_of = nullptr;             ///< The mask `mips` belongs to (null: none looked up yet).
   const LeafMips* mips = nullptr;                 ///< Leaf mips of the part's mask (null without a mask).
 
@@ -68,23 +63,29 @@ struct HitTriangle {
       inst = &scene.instances[instance_index];
       m = inst->object_to_world.cast<double>();
       const Mat3d lin = m.leftCols<3>();
-      cof.col(0) = lin.col(1).cross(lin.col(2));
-      cof.col(1) = lin.col(2).cross(lin.col(0));
-      cof.col(2) = lin.col(0).cross(lin.col(1));
-      if (lin.determinant() < 0.0) cof = -cof;
+      geo.cof.col(0) = lin.col(1).cross(lin.col(2));
+      geo.cof.col(1) = lin.col(2).cross(lin.col(0));
+      geo.cof.col(2) = lin.col(0).cross(lin.col(1));
+      if (lin.determinant() < 0.0) geo.cof = -geo.cof;
     }
     instance = instance_index;
     triangle = triangle_index;
     mesh = scene.meshes[inst->mesh].lods[lod];
     idx = &mesh->indices[size_t(triangle_index) * 3];
-    for (int k = 0; k < 3; ++k) p[k] = m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3);
-    e1 = p[1] - p[0];
-    e2 = p[2] - p[0];
-    s = origin - p[0];
-    qvec = s.cross(e1);
-    e2_dot_q = e2.dot(qvec);
+    for (int k = 0; k < 3; ++k) geo.p[k] = m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3);
+    geo.e1 = geo.p[1] - geo.p[0];
+    geo.e2 = geo.p[2] - geo.p[0];
+    geo.s = origin - geo.p[0];
+    geo.qvec = geo.s.cross(geo.e1);
+    geo.e2_dot_q = geo.e2.dot(geo.qvec);
+    geo.has_normals = !mesh->normals.empty();
+    geo.has_uvs = !mesh->uvs.empty();
+    for (int k = 0; k < 3; ++k) {
+      if (geo.has_normals) geo.corner_normal[k] = mesh->normals[idx[k]].cast<double>();
+      if (geo.has_uvs) geo.corner_uv[k] = mesh->uvs[idx[k]].cast<double>();
+    }
     part = &part_of(*mesh, triangle_index);
-    mask_texels_per_metre = part->mask && !mesh->uvs.empty() ? texel_density(*part->mask) : 0.0;
+    geo.mask_texels_per_metre = part->mask && geo.has_uvs ? texel_density(*part->mask) : 0.0;
     if (part->mask.get() != mips_of) {  // the slot's last mask is most often this one
       mips_of = part->mask.get();
       mips = mips_of ? masks.leaf_mips(mips_of) : nullptr;
@@ -94,10 +95,10 @@ struct HitTriangle {
 
   /// Mask texels per metre: the square root of the triangle's area in texels over its world area.
   double texel_density(const AlphaMask& mask) const {
-    const Eigen::Vector2d texels(mask.width, mask.height), t0 = mesh->uvs[idx[0]].cast<double>();
-    const Eigen::Vector2d a = (mesh->uvs[idx[1]].cast<double>() - t0).cwiseProduct(texels);
-    const Eigen::Vector2d b = (mesh->uvs[idx[2]].cast<double>() - t0).cwiseProduct(texels);
-    const double world = e1.cross(e2).norm();
+    const Eigen::Vector2d texels(mask.width, mask.height), t0 = geo.corner_uv[0];
+    const Eigen::Vector2d a = (geo.corner_uv[1] - t0).cwiseProduct(texels);
+    const Eigen::Vector2d b = (geo.corner_uv[2] - t0).cwiseProduct(texels);
+    const double world = geo.e1.cross(geo.e2).norm();
     return world > 0.0 ? std::sqrt(std::abs(a.x() * b.y() - a.y() * b.x()) / world) : 0.0;
   }
 };
@@ -122,53 +123,19 @@ class TriangleCache {
   std::vector<HitTriangle> slots_ = std::vector<HitTriangle>(kTriangleSlots);
 };
 
-/// Re-intersects a pixel's centre ray with its triangle and writes the surface.
-/// (ray_x, ray_y) is the pixel's camera-space ray (Camera::ray_x, ray_y).
-void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray_y, GBuffer& g, size_t i) {
-  const Vec3d* p = h.p;
-  const Vec3d& e1 = h.e1;
-  const Vec3d& e2 = h.e2;
-  const Mesh& mesh = *h.mesh;
-  const uint32_t* idx = h.idx;
-  const Vec3d origin = cam.position();
-  const Vec3d dir = cam.world_direction(ray_x, ray_y);  // camera z component 1: t is metric z
-  const Vec3d pvec = dir.cross(e2);
-  const double det = e1.dot(pvec);
-  double b1 = 1.0 / 3.0, b2 = 1.0 / 3.0, t = 0.0;
-  if (det != 0.0) {
-    b1 = h.s.dot(pvec) / det;
-    b2 = dir.dot(h.qvec) / det;
-    t = h.e2_dot_q / det;
-  }
-  if (!(t > 0.0)) {  // ray parallel to the triangle's plane: fall back to the centroid's depth
-    const Vec3d centroid = (p[0] + p[1] + p[2]) / 3.0;
-    t = (cam.world_to_camera().block<1, 3>(2, 0) * centroid)(0) + cam.world_to_camera()(2, 3);
-    b1 = b2 = 1.0 / 3.0;
-  }
-  const double b0 = 1.0 - b1 - b2;
-  const Vec3d hit = origin + t * dir;
-  // Normal: interpolated vertex normals through the inverse transpose (cofactor matrix).
-  Vec3d n_obj = e1.cross(e2);  // fallback: geometric normal (already in world space)
-  bool object_space = false;
-  if (!mesh.normals.empty()) {
-    n_obj = b0 * mesh.normals[idx[0]].cast<double>() + b1 * mesh.normals[idx[1]].cast<double>() +
-            b2 * mesh.normals[idx[2]].cast<double>();
-    object_space = true;
-  }
-  Vec3d n = object_space ? Vec3d(h.cof * n_obj) : n_obj;
-  const double len = n.norm();
-  n = len > 0.0 ? Vec3d(n / len) : Vec3d(-dir.normalized());
-  if (n.dot(dir) > 0.0) n = -n;
-  Vec2f uv = Vec2f::Zero();
-  if (!mesh.uvs.empty()) {
-    const Eigen::Vector2d w = b0 * mesh.uvs[idx[0]].cast<double>() + b1 * mesh.uvs[idx[1]].cast<double>() +
-                              b2 * mesh.uvs[idx[2]].cast<double>();
-    uv = w.cast<float>();
-  }
-  g.depth[i] = float(t);
-  g.position[i] = hit.cast<float>();
-  g.normal[i] = n.cast<float>();
-  g.uv[i] = uv;
+/// Writes a hit pixel's geometry.
+void write_geometry(const PixelHit& hit, GBuffer& g, size_t i) {
+  g.depth[i] = hit.depth;
+  g.position[i] = hit.position;
+  g.normal[i] = hit.normal;
+  g.uv[i] = hit.uv;
+  g.mask_texels[i] = hit.mask_texels;
+}
+
+/// Writes what a hit pixel takes from its triangle's part and instance, after its geometry: role and
+/// material (or the overlay's), base colour, instance id and variation, and the leaf alpha.
+void write_labels(const HitTriangle& h, GBuffer& g, size_t i) {
+  const Vec2f& uv = g.uv[i];
   g.role[i] = h.part->role;
   g.material[i] = h.part->material;
   if (h.part->overlay && uv.x() < kOverlayMargin + kOverlayRagged) {
@@ -180,8 +147,25 @@ void write_hit(const Camera& cam, const HitTriangle& h, double ray_x, double ray
   g.instance_id[i] = h.inst->instance_id;
   g.variation[i] = h.inst->variation;
   const AlphaMask* mask = h.part->mask.get();
-  g.mask_texels[i] = float(h.mask_texels_per_metre * t / cam.fx);  // the pixel is t / fx metres wide there
   g.leaf[i] = mask ? h.mips->alpha(*mask, uv.x(), uv.y(), g.mask_texels[i]) : 0;
+}
+
+/// Shortest run of pixels whose geometry is computed on SIMD lanes (shorter ones: one pixel at a time,
+/// which gives the same bits and is faster there).
+constexpr size_t kLaneRunMin = 4;
+
+/// Writes pixels [i, i + count) (count <= kHitRunMax) of a row, all seeing h: their geometry (on SIMD
+/// lanes for runs of kLaneRunMin or more, a pixel taking a fallback one at a time), then their labels.
+void write_run(const Camera& cam, const HitTriangle& h, const double* ray_x, double ray_y, GBuffer& g, size_t i,
+               size_t count) {
+  const uint64_t fallback =
+      count < kLaneRunMin ? ~uint64_t(0)
+                          : hit_geometry_run(cam, h.geo, ray_x, ray_y, count, &g.depth[i], &g.position[i], &g.normal[i],
+                                             &g.uv[i], &g.mask_texels[i]);
+  for (size_t k = 0; k < count; ++k) {
+    if ((fallback >> k) & 1) write_geometry(hit_geometry(cam, h.geo, ray_x[k], ray_y), g, i + k);
+    write_labels(h, g, i + k);
+  }
 }
 
 }  // namespace
@@ -199,16 +183,21 @@ void resolve_gbuffer(const Scene& scene, const Camera& camera, const VisibilityB
     const Vec3d origin = camera.position();
     for (int v = rows.begin(); v != rows.end(); ++v) {
       const double ray_y = camera.ray_y(v);
-      for (int u = 0; u < vis.width; ++u) {
-        const size_t i = size_t(v) * size_t(vis.width) + size_t(u);
-        const uint32_t inst = vis.instance[i];
+      const size_t row = size_t(v) * size_t(vis.width);
+      for (size_t u = 0; u < size_t(vis.width);) {
+        const uint32_t inst = vis.instance[row + u], tri = vis.triangle[row + u];
         if (inst == kNoInstance) {
-          write_miss(out, i);
-        } else {
-          if (!h || inst != h->instance || vis.triangle[i] != h->triangle)
-            h = &cache.get(scene, masks, inst, instance_lod[inst], vis.triangle[i], origin);
-          write_hit(camera, *h, ray_x[size_t(u)], ray_y, out, i);
+          write_miss(out, row + u++);
+          continue;
         }
+        size_t end = u + 1;  // the run of pixels that see the same triangle
+        while (end < size_t(vis.width) && end - u < kHitRunMax && vis.instance[row + end] == inst &&
+               vis.triangle[row + end] == tri)
+          ++end;
+        if (!h || inst != h->instance || tri != h->triangle)
+          h = &cache.get(scene, masks, inst, instance_lod[inst], tri, origin);
+        write_run(camera, *h, &ray_x[u], ray_y, out, row + u, end - u);
+        u = end;
       }
     }
   });
