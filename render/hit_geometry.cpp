@@ -2,6 +2,17 @@
 
 namespace silva::render {
 
+void HitGeometry::place(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3d& origin) {
+  p[0] = p0;
+  p[1] = p1;
+  p[2] = p2;
+  e1 = p1 - p0;
+  e2 = p2 - p0;
+  s = origin - p0;
+  qvec = s.cross(e1);
+  e2_dot_q = e2.dot(qvec);
+}
+
 PixelHit hit_geometry(const Camera& cam, const HitGeometry& h, double ray_x, double ray_y) {
   const Vec3d origin = cam.position();
   const Vec3d dir = cam.world_direction(ray_x, ray_y);  // camera z component 1: t is metric z

@@ -22,6 +22,9 @@ struct HitGeometry {
   bool has_uvs = false;             ///< The mesh has uvs (otherwise uv is 0).
   Eigen::Vector2d corner_uv[3];     ///< Corner uvs, when it has them.
   double mask_texels_per_metre = 0; ///< Masked part: mask texels per metre of the triangle.
+
+  /// Sets the corners p0, p1, p2 (world space) and what follows from them and the camera's `origin`.
+  void place(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3d& origin);
 };
 
 /// What the G-buffer stores of one pixel's hit geometry.

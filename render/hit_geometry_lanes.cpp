@@ -36,8 +36,8 @@ HWY_INLINE V3 splat(const Vec3d& v) {
   return {hn::Set(d, v.x()), hn::Set(d, v.y()), hn::Set(d, v.z())};
 }
 
-/// m v for a 3x3 matrix the same on every lane, as Eigen's fixed-size product associates: rows 0 and 1
-/// left to right, row 2 as m20 v0 + (m21 v1 + m22 v2).
+/// m v for the top-left 3x3 of a matrix the same on every lane, as Eigen's fixed-size product associates:
+/// rows 0 and 1 left to right, row 2 as m20 v0 + (m21 v1 + m22 v2).
 template <class M>
 HWY_INLINE V3 product(const M& m, const V3& v) {
   const DTag d;
@@ -68,11 +68,7 @@ struct LaneHit {
 /// Evaluates hit_geometry's common path on the lanes of x.
 HWY_INLINE LaneHit hit_lanes(const Camera& cam, const HitGeometry& h, VD x, double ray_y) {
   const DTag d;
-  const auto& r = cam.camera_to_world;
-  // camera_to_world's rotation times (x, ray_y, 1): the ray_y and 1 terms are the same on every lane.
-  const V3 dir{hn::Add(hn::Add(hn::Mul(hn::Set(d, r(0, 0)), x), hn::Set(d, r(0, 1) * ray_y)), hn::Set(d, r(0, 2))),
-               hn::Add(hn::Add(hn::Mul(hn::Set(d, r(1, 0)), x), hn::Set(d, r(1, 1) * ray_y)), hn::Set(d, r(1, 2))),
-               hn::Add(hn::Mul(hn::Set(d, r(2, 0)), x), hn::Set(d, r(2, 1) * ray_y + r(2, 2)))};
+  const V3 dir = product(cam.camera_to_world, V3{x, hn::Set(d, ray_y), hn::Set(d, 1.0)});  // Camera::world_direction
   const V3 e1 = splat(h.e1), e2 = splat(h.e2);
   const V3 pvec{hn::Sub(hn::Mul(dir.y, e2.z), hn::Mul(dir.z, e2.y)), hn::Sub(hn::Mul(dir.z, e2.x), hn::Mul(dir.x, e2.z)),
                 hn::Sub(hn::Mul(dir.x, e2.y), hn::Mul(dir.y, e2.x))};
@@ -86,9 +82,9 @@ HWY_INLINE LaneHit hit_lanes(const Camera& cam, const HitGeometry& h, VD x, doub
   const Vec3d origin = cam.position();
   out.hit = {hn::Add(hn::Set(d, origin.x()), hn::Mul(out.t, dir.x)), hn::Add(hn::Set(d, origin.y()), hn::Mul(out.t, dir.y)),
              hn::Add(hn::Set(d, origin.z()), hn::Mul(out.t, dir.z))};
-  const auto& c = h.corner_normal;
-  V3 n = h.has_normals ? product(h.cof, V3{blend(b0, b1, b2, c[0], c[1], c[2], 0), blend(b0, b1, b2, c[0], c[1], c[2], 1),
-                                          blend(b0, b1, b2, c[0], c[1], c[2], 2)})
+  const auto& cn = h.corner_normal;
+  V3 n = h.has_normals ? product(h.cof, V3{blend(b0, b1, b2, cn[0], cn[1], cn[2], 0), blend(b0, b1, b2, cn[0], cn[1], cn[2], 1),
+                                          blend(b0, b1, b2, cn[0], cn[1], cn[2], 2)})
                        : splat(h.e1.cross(h.e2));
   const VD len = hn::Sqrt(dot(n, n));
   out.fallback = hn::Or(out.fallback, hn::Not(hn::Gt(len, hn::Zero(d))));
@@ -98,9 +94,9 @@ HWY_INLINE LaneHit hit_lanes(const Camera& cam, const HitGeometry& h, VD x, doub
            hn::IfThenElse(facing_away, hn::Neg(n.z), n.z)};
   out.u = out.v = hn::Zero(d);
   if (h.has_uvs) {
-    const auto& c = h.corner_uv;
-    out.u = blend(b0, b1, b2, c[0], c[1], c[2], 0);
-    out.v = blend(b0, b1, b2, c[0], c[1], c[2], 1);
+    const auto& cu = h.corner_uv;
+    out.u = blend(b0, b1, b2, cu[0], cu[1], cu[2], 0);
+    out.v = blend(b0, b1, b2, cu[0], cu[1], cu[2], 1);
   }
   return out;
 }

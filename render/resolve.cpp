@@ -72,12 +72,8 @@ struct HitTriangle {
     triangle = triangle_index;
     mesh = scene.meshes[inst->mesh].lods[lod];
     idx = &mesh->indices[size_t(triangle_index) * 3];
-    for (int k = 0; k < 3; ++k) geo.p[k] = m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3);
-    geo.e1 = geo.p[1] - geo.p[0];
-    geo.e2 = geo.p[2] - geo.p[0];
-    geo.s = origin - geo.p[0];
-    geo.qvec = geo.s.cross(geo.e1);
-    geo.e2_dot_q = geo.e2.dot(geo.qvec);
+    const auto corner = [&](int k) -> Vec3d { return m.leftCols<3>() * mesh->positions[idx[k]].cast<double>() + m.col(3); };
+    geo.place(corner(0), corner(1), corner(2), origin);
     geo.has_normals = !mesh->normals.empty();
     geo.has_uvs = !mesh->uvs.empty();
     for (int k = 0; k < 3; ++k) {

@@ -18,12 +18,7 @@ uint32_t bits(float f) { return std::bit_cast<uint32_t>(f); }
 HitGeometry triangle(const Vec3d (&p)[3], const Vec3d& origin, const Mat3d& cof, const std::vector<Vec3d>& normals,
                      const std::vector<Eigen::Vector2d>& uvs) {
   HitGeometry h;
-  for (int k = 0; k < 3; ++k) h.p[k] = p[k];
-  h.e1 = p[1] - p[0];
-  h.e2 = p[2] - p[0];
-  h.s = origin - p[0];
-  h.qvec = h.s.cross(h.e1);
-  h.e2_dot_q = h.e2.dot(h.qvec);
+  h.place(p[0], p[1], p[2], origin);
   h.cof = cof;
   h.has_normals = !normals.empty();
   h.has_uvs = !uvs.empty();
